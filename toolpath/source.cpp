@@ -1,0 +1,30 @@
+#include "toolpath/source.hpp"
+
+#include <utility>
+
+namespace toolpath {
+
+bool LookaheadSource::next(Command& out) {
+  if (has_buffered_) {
+    std::swap(out, buffered_);  // hand over the buffered command; `buffered_` keeps `out`'s buffers
+    has_buffered_ = false;
+    return true;
+  }
+  if (at_end_) return false;
+  if (inner_.next(out)) return true;
+  at_end_ = true;
+  return false;
+}
+
+const Command* LookaheadSource::peek() {
+  if (has_buffered_) return &buffered_;
+  if (at_end_) return nullptr;
+  if (!inner_.next(buffered_)) {
+    at_end_ = true;
+    return nullptr;
+  }
+  has_buffered_ = true;
+  return &buffered_;
+}
+
+}  // namespace toolpath

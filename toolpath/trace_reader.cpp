@@ -1,0 +1,329 @@
+#include "toolpath/trace_reader.hpp"
+
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+namespace toolpath {
+namespace {
+
+constexpr std::size_t kChunk = 1 << 18;
+
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
+bool is_ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+std::size_t skip_blanks(std::string_view s, std::size_t i) {
+  while (i < s.size() && is_blank(s[i])) ++i;
+  return i;
+}
+
+std::string_view trim_right(std::string_view s) {
+  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+// Length of an identifier at the start of `s` (0 if none).
+std::size_t ident_length(std::string_view s) {
+  if (s.empty() || !is_ident_start(s[0])) return 0;
+  std::size_t n = 1;
+  while (n < s.size() && is_ident_char(s[n])) ++n;
+  return n;
+}
+
+// True when `s` starts with `identifier:` (how a name:value pair opens in the inline layout).
+bool starts_with_pair(std::string_view s) {
+  std::size_t n = ident_length(s);
+  return n > 0 && n < s.size() && s[n] == ':';
+}
+
+// Number syntax: [+-] digits [. digits] [e [+-] digits] with at least one digit in the mantissa.
+// Returns the length of the number, or 0; sets `is_numeric` when it has a point or an exponent.
+std::size_t number_length(std::string_view s, bool& is_numeric) {
+  std::size_t i = 0, digits = 0;
+  is_numeric = false;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++digits;
+  if (i < s.size() && s[i] == '.') {
+    is_numeric = true;
+    ++i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++digits;
+  }
+  if (digits == 0) return 0;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    std::size_t j = i + 1;
+    if (j < s.size() && (s[j] == '+' || s[j] == '-')) ++j;
+    std::size_t exp_start = j;
+    while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]))) ++j;
+    if (j > exp_start) {
+      is_numeric = true;
+      i = j;
+    }
+  }
+  return i;
+}
+
+SourcePosition advanced(const SourcePosition& where, std::size_t by) {
+  SourcePosition p = where;
+  p.column += by;
+  return p;
+}
+
+}  // namespace
+
+Value parse_value(std::string_view text, const SourcePosition& where) {
+  text = trim_right(text);
+  if (text.empty()) return Value::make_string({});
+  const char q = text.front();
+  if (q == '\'' || q == '"') {
+    if (text.size() < 2 || text.back() != q)
+      throw InputError(advanced(where, text.size()), std::string("expected closing ") + q + " of the string");
+    return Value::make_string(std::string(text.substr(1, text.size() - 2)));
+  }
+  bool is_numeric = false;
+  if (std::size_t n = number_length(text, is_numeric); n > 0) {
+    std::string_view rest = text.substr(n);
+    ChangeFlag flag = ChangeFlag::None;
+    if (rest == "T" || rest == "t") flag = ChangeFlag::Changed;
+    else if (rest == "F" || rest == "f") flag = ChangeFlag::Unchanged;
+    if (rest.empty() || flag != ChangeFlag::None) {
+      std::string_view digits = text.substr(0, n);
+      if (!is_numeric) {
+        std::int64_t v = 0;
+        const char* first = digits.data() + (digits.front() == '+' ? 1 : 0);
+        auto [ptr, ec] = std::from_chars(first, digits.data() + digits.size(), v);
+        if (ec != std::errc() || ptr != digits.data() + digits.size())
+          throw InputError(where, "integer out of range: " + std::string(digits));
+        return Value::make_integer(v, flag);
+      }
+      std::string copy(digits);  // strtod needs a terminated string; from_chars<double> is not in GCC 12's libstdc++ for all cases
+      errno = 0;
+      double v = std::strtod(copy.c_str(), nullptr);
+      if (errno == ERANGE && std::isinf(v)) throw InputError(where, "number out of range: " + copy);
+      return Value::make_numeric(v, flag);
+    }
+  }
+  if (iequals(text, "true")) return Value::make_logical(true);
+  if (iequals(text, "false")) return Value::make_logical(false);
+  if (ident_length(text) == text.size()) return Value::make_enum(std::string(text));
+  // Free text: user parameters may hold unquoted words with blanks (`Salamat Abzar Check Shavad!!`).
+  return Value::make_string(std::string(text));
+}
+
+TraceReader::TraceReader(std::istream& in, std::string file_name) : in_(in), file_(std::move(file_name)) {}
+
+TraceReader::~TraceReader() = default;
+
+std::unique_ptr<TraceReader> TraceReader::open(const std::string& path) {
+  auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
+  if (!*file) throw InputError({path, 0, 0}, std::string("cannot open file: ") + std::strerror(errno));
+  auto reader = std::make_unique<TraceReader>(*file, path);
+  reader->owned_ = std::move(file);
+  return reader;
+}
+
+void TraceReader::fail(std::size_t column, const std::string& message) const {
+  throw InputError({file_, line_number_, column}, message);
+}
+
+// Reads the next line into line_ (without "\n" or "\r\n"); false at the end of the input.
+bool TraceReader::read_line() {
+  line_.clear();
+  for (;;) {
+    if (buffer_pos_ < buffer_.size()) {
+      const char* start = buffer_.data() + buffer_pos_;
+      const std::size_t avail = buffer_.size() - buffer_pos_;
+      if (const void* nl = std::memchr(start, '\n', avail)) {
+        const std::size_t len = static_cast<const char*>(nl) - start;
+        line_.append(start, len);
+        buffer_pos_ += len + 1;
+        break;
+      }
+      line_.append(start, avail);
+      buffer_pos_ = buffer_.size();
+    }
+    if (stream_done_) {
+      if (line_.empty()) return false;
+      break;  // last line without a trailing newline
+    }
+    buffer_.resize(kChunk);
+    in_.read(buffer_.data(), static_cast<std::streamsize>(kChunk));
+    buffer_.resize(static_cast<std::size_t>(in_.gcount()));
+    buffer_pos_ = 0;
+    if (buffer_.empty()) stream_done_ = true;
+    if (in_.bad()) fail(1, "read error");
+  }
+  if (!line_.empty() && line_.back() == '\r') line_.pop_back();
+  ++line_number_;
+  return true;
+}
+
+bool TraceReader::next(Command& out) {
+  // Find the header: skip blank lines; anything else before the first header is an error.
+  while (!have_line_) {
+    if (!read_line()) return false;
+    std::size_t i = skip_blanks(line_, 0);
+    if (i == line_.size() || line_[i] == ';') continue;
+    have_line_ = true;
+  }
+  out.clear();
+  have_line_ = false;
+  if (!parse_header(out)) {
+    std::size_t col = skip_blanks(line_, 0) + 1;
+    fail(col, "expected a command header `(N)@name` or `@name`");
+  }
+  out.index = next_index_++;
+  bool first = true;
+  while (read_line()) {
+    std::size_t i = skip_blanks(line_, 0);
+    if (i == line_.size() || line_[i] == ';') continue;  // blank lines and `;` comments
+    std::string_view rest = std::string_view(line_).substr(i);
+    if (rest.front() == '@' || (rest.front() == '(' && rest.find(")@") != std::string_view::npos)) {
+      have_line_ = true;  // the next command's header
+      break;
+    }
+    parse_body_line(out, first);
+    first = false;
+  }
+  return true;
+}
+
+// `(N)@name` [blanks] [`==>` pairs]. In the inline layout N is the depth; in the block form it is
+// the command's sequence number, which the reader recomputes from the position.
+bool TraceReader::parse_header(Command& out) {
+  std::string_view s = line_;
+  std::size_t i = skip_blanks(s, 0);
+  bool has_number = false;
+  long number = 1;
+  std::size_t number_column = i + 2;
+  if (i < s.size() && s[i] == '(') {
+    std::size_t j = i + 1;
+    std::size_t start = j;
+    if (j < s.size() && s[j] == '-') ++j;
+    while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]))) ++j;
+    if (j == start || j >= s.size() || s[j] != ')') fail(i + 2, "expected a number and `)` in the command header");
+    auto [p, ec] = std::from_chars(s.data() + start, s.data() + j, number);
+    if (ec != std::errc()) fail(i + 2, "number out of range in the command header");
+    has_number = true;
+    i = j + 1;
+  }
+  if (i >= s.size() || s[i] != '@') return false;
+  std::size_t name_start = i;
+  ++i;
+  std::size_t n = ident_length(s.substr(i));
+  if (n == 0) fail(i + 1, "expected a command name after `@`");
+  i += n;
+  out.name.assign(s.substr(name_start, i - name_start));
+  std::size_t after_name = i;
+  i = skip_blanks(s, i);
+  if (s.substr(i, 3) == "==>") {
+    if (has_number) {
+      if (number < 0) fail(number_column, "expected a depth of 0 or more");
+      out.depth = static_cast<int>(number);
+    }
+    name_may_be_cut_ = (i == after_name);  // SolidCAM cuts long names where `==>` begins
+    std::size_t text_start = i + 3;
+    parse_pairs(out, std::string_view(line_).substr(text_start), text_start + 1, TraceLine::Kind::Partial);
+    return true;
+  }
+  name_may_be_cut_ = false;
+  if (i != s.size()) fail(i + 1, "expected `==>` or the end of the line after the command name");
+  return true;
+}
+
+void TraceReader::parse_body_line(Command& out, bool first_after_header) {
+  std::string_view s = line_;
+  std::size_t i = skip_blanks(s, 0);
+
+  // A cut name continues at column 4 of the next line: `   ut                 > N290 S1910`.
+  if (first_after_header && name_may_be_cut_ && i == 3 && is_ident_char(s[i])) {
+    std::size_t j = i;
+    while (j < s.size() && is_ident_char(s[j])) ++j;
+    std::size_t k = skip_blanks(s, j);
+    if (k == s.size() || s[k] == '>' || s.substr(k, 3) == "..>") {
+      out.name.append(s.substr(i, j - i));
+      if (k == s.size()) return;
+      i = k;
+    }
+  }
+
+  std::string_view rest = s.substr(i);
+  if (rest.substr(0, 3) == "..>") {
+    std::size_t text_start = i + 3;
+    parse_pairs(out, s.substr(text_start), text_start + 1, TraceLine::Kind::Note);
+    return;
+  }
+  if (rest.front() == '>' && (rest.size() == 1 || rest[1] == ' ')) {
+    out.trace.push_back({TraceLine::Kind::Output, std::string(rest.size() > 1 ? rest.substr(2) : std::string_view{})});
+    return;
+  }
+  if (rest.substr(0, 2) == "!!") {
+    out.trace.push_back({TraceLine::Kind::Directive, std::string(trim_right(rest))});
+    return;
+  }
+  // Block form: `name : value`.
+  std::size_t n = ident_length(rest);
+  if (n > 0) {
+    std::size_t colon = skip_blanks(s, i + n);
+    if (colon < s.size() && s[colon] == ':') {
+      std::size_t v = skip_blanks(s, colon + 1);
+      Value value = parse_value(s.substr(v), {file_, line_number_, v + 1});
+      out.parameters.push_back(Parameter{std::string(rest.substr(0, n)), std::move(value)});
+      return;
+    }
+    fail(skip_blanks(s, i + n) + 1, "expected `:` after the parameter name `" + std::string(rest.substr(0, n)) + "`");
+  }
+  fail(i + 1, "expected `name : value`, `..>` continuation, `> ` output line or a command header");
+}
+
+// The text after `==>` or `..>`: blank-separated `name:value` pairs, or free text kept as `otherwise`.
+void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t column, TraceLine::Kind otherwise) {
+  std::size_t i = skip_blanks(text, 0);
+  if (i == text.size()) return;
+  if (!starts_with_pair(text.substr(i))) {
+    // Free text: the whole remainder without the one separating blank.
+    std::string_view kept = text.substr(text.front() == ' ' ? 1 : 0);
+    out.trace.push_back({otherwise, std::string(otherwise == TraceLine::Kind::Partial ? kept : trim_right(kept))});
+    return;
+  }
+  while (i < text.size()) {
+    std::size_t n = ident_length(text.substr(i));
+    if (n == 0 || i + n >= text.size() || text[i + n] != ':')
+      fail(column + i, "expected `name:value`");
+    std::string_view name = text.substr(i, n);
+    std::size_t v = i + n + 1;
+    std::size_t end = v;
+    if (v < text.size() && (text[v] == '\'' || text[v] == '"')) {
+      // A quoted value ends at its quote followed by a blank or the end of the line.
+      const char q = text[v];
+      std::size_t k = v + 1;
+      for (;; ++k) {
+        k = text.find(q, k);
+        if (k == std::string_view::npos) fail(column + text.size(), std::string("expected closing ") + q + " of the string");
+        if (k + 1 == text.size() || is_blank(text[k + 1])) break;
+      }
+      end = k + 1;
+    } else {
+      // An unquoted value runs to the next ` name:` (it may hold blanks) or the end of the line.
+      end = text.size();
+      for (std::size_t k = v; k < text.size(); ++k) {
+        if (is_blank(text[k])) {
+          std::size_t m = skip_blanks(text, k);
+          if (m < text.size() && starts_with_pair(text.substr(m))) {
+            end = k;
+            break;
+          }
+        }
+      }
+    }
+    Value value = parse_value(text.substr(v, end - v), {file_, line_number_, column + v});
+    out.parameters.push_back(Parameter{std::string(name), std::move(value)});
+    i = skip_blanks(text, end);
+  }
+}
+
+}  // namespace toolpath

@@ -1,0 +1,51 @@
+// Streaming reader of the `.trace` text format: the block form (`(N)@name` then `name : value`
+// lines) and the SolidCAM level-5 layout (`(depth)@name ==> k:v ...`, `..>` continuations,
+// `> NC line` output, wrapped long names). See docs/trace-format.md.
+#pragma once
+
+#include <cstddef>
+#include <istream>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "toolpath/error.hpp"
+#include "toolpath/source.hpp"
+
+namespace toolpath {
+
+// Parses one value as it appears after `name :` (`'text'`, `12`, `1.5T`, `TRUE`, `CW`, or free text).
+// Throws InputError at `where` (column advanced to the fault) when the text is malformed.
+Value parse_value(std::string_view text, const SourcePosition& where);
+
+class TraceReader final : public CommandSource {
+public:
+  // Reads from `in`, which must outlive the reader; `file_name` is used in error messages.
+  TraceReader(std::istream& in, std::string file_name);
+  ~TraceReader() override;
+  // Opens a file; throws InputError when it cannot be read.
+  static std::unique_ptr<TraceReader> open(const std::string& path);
+
+  bool next(Command& out) override;
+
+private:
+  bool read_line();
+  [[noreturn]] void fail(std::size_t column, const std::string& message) const;
+  bool parse_header(Command& out);
+  void parse_body_line(Command& out, bool first_after_header);
+  void parse_pairs(Command& out, std::string_view text, std::size_t column, TraceLine::Kind otherwise);
+
+  std::unique_ptr<std::istream> owned_;
+  std::istream& in_;
+  std::string file_;
+  std::string buffer_;           // raw bytes read from the stream
+  std::size_t buffer_pos_ = 0;
+  bool stream_done_ = false;
+  std::string line_;             // the current line, without its line end
+  std::size_t line_number_ = 0;
+  bool have_line_ = false;       // line_ holds a header not yet consumed
+  std::size_t next_index_ = 0;
+  bool name_may_be_cut_ = false; // the header's name ran up to `==>` and may continue below
+};
+
+}  // namespace toolpath
