@@ -1,0 +1,55 @@
+// Value factories and error types of the public header.
+#include <fmt/format.h>
+
+#include "gppl/gppl.hpp"
+
+namespace gppl {
+
+Value Value::of_integer(std::int64_t v) {
+  Value r;
+  r.type = Type::Integer;
+  r.integer = v;
+  return r;
+}
+
+Value Value::of_numeric(double v) {
+  Value r;
+  r.type = Type::Numeric;
+  r.numeric = v;
+  return r;
+}
+
+Value Value::of_logical(bool v) {
+  Value r;
+  r.type = Type::Logical;
+  r.logical = v;
+  return r;
+}
+
+Value Value::of_string(std::string v) {
+  Value r;
+  r.type = Type::String;
+  r.text = std::move(v);
+  return r;
+}
+
+Error::Error(int number, Position where, const std::string& text)
+    : std::runtime_error(fmt::format("{}:{}:{}: error {}: {}", where.file, where.line, where.column, number, text)),
+      number_(number),
+      where_(std::move(where)),
+      text_(text) {}
+
+namespace {
+std::string join(const std::vector<Error>& all) {
+  std::string s;
+  for (const auto& e : all) {
+    if (!s.empty()) s += '\n';
+    s += e.what();
+  }
+  return s;
+}
+}  // namespace
+
+Errors::Errors(std::vector<Error> all) : std::runtime_error(join(all)), all_(std::move(all)) {}
+
+}  // namespace gppl

@@ -1,0 +1,153 @@
+// The public face of the GPPL library: compile a post once, then run its procedures against an
+// environment of variables, writing NC lines to a sink. It knows nothing of toolpath files.
+//
+// Contract between gppl/ and the engine (postproc/): keep this header small and stable.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gppl {
+
+enum class Type : std::uint8_t { Integer, Numeric, Logical, String };
+
+struct Value {
+  Type type = Type::Integer;
+  std::int64_t integer = 0;  // Integer (Logical uses `logical`)
+  double numeric = 0.0;      // Numeric
+  bool logical = false;      // Logical
+  std::string text;          // String
+
+  static Value of_integer(std::int64_t v);
+  static Value of_numeric(double v);
+  static Value of_logical(bool v);
+  static Value of_string(std::string v);
+  friend bool operator==(const Value&, const Value&) = default;
+};
+
+struct Position {
+  std::string file;  // as given (the main file's path; includes relative to it)
+  int line = 0;      // 1-based
+  int column = 0;    // 1-based
+};
+
+// Every diagnostic carries the GPPTool error number (section 13 of the spec) and a position:
+// what() is "file:line:col: error NNN: text".
+class Error : public std::runtime_error {
+public:
+  Error(int number, Position where, const std::string& text);
+  int number() const { return number_; }
+  const Position& where() const { return where_; }
+  const std::string& text() const { return text_; }
+
+private:
+  int number_;
+  Position where_;
+  std::string text_;
+};
+
+// Several load-time errors at once (compile collects them before giving up).
+class Errors : public std::runtime_error {
+public:
+  explicit Errors(std::vector<Error> all);
+  const std::vector<Error>& all() const { return all_; }
+
+private:
+  std::vector<Error> all_;
+};
+
+// Variables the host declares before compiling: system variables (gcode, blknum, ... which the
+// library itself knows), command parameters (internal: xpos, radius, ...) and PRP externals.
+struct HostVariable {
+  std::string name;
+  Type type = Type::Numeric;
+  bool read_only = false;
+  std::vector<int> dimensions;  // empty for scalars; 1-based sizes for host arrays (chng_cond<<3,n>>)
+};
+
+struct CompileOptions {
+  std::vector<HostVariable> host_variables;
+  // Real posts read command parameters the host may not list. When true, an identifier that is
+  // declared nowhere becomes a host variable whose type is fixed by its first assignment from the
+  // host (a warning, not error 383). `postproc check` compiles with this false.
+  bool implicit_host_variables = true;
+  // Where `include`/`inc` files are looked up besides the including file's folder.
+  std::vector<std::string> include_paths;
+};
+
+class Program;  // parsed, resolved, immutable; shareable between interpreters
+
+std::shared_ptr<const Program> compile_file(const std::string& path, const CompileOptions& options);
+std::shared_ptr<const Program> compile_source(std::string_view text, const std::string& file_name,
+                                              const CompileOptions& options);
+
+// Warnings found while compiling (implicit host variables, ...), "file:line:col: warning: text".
+const std::vector<std::string>& warnings(const Program& program);
+
+// Where finished NC lines go. `origin` tells which procedure and source line started the line
+// (for `postproc explain` and for naming the procedure in regression diffs).
+struct LineOrigin {
+  std::string_view procedure;  // "@line"
+  int source_line = 0;
+};
+
+class OutputSink {
+public:
+  virtual ~OutputSink() = default;
+  // One finished line, without the line terminator. Output directives (`!!open file=X!!`) arrive
+  // here too, as plain lines: executing them is the host's job.
+  virtual void write_line(std::string_view line, const LineOrigin& origin) = 0;
+};
+
+enum class ChangeOverride : std::uint8_t { Compute, ForceChanged, ForceUnchanged };
+
+// How a procedure run ended. `exit` ends the current P-code; `abort` ends the whole run.
+enum class RunResult : std::uint8_t { Normal, Exit, Abort };
+
+using VariableId = std::uint32_t;
+using ProcedureId = std::uint32_t;
+
+class Interpreter {
+public:
+  Interpreter(std::shared_ptr<const Program> program, OutputSink& sink);
+  ~Interpreter();
+  Interpreter(const Interpreter&) = delete;
+  Interpreter& operator=(const Interpreter&) = delete;
+
+  // Name -> slot, resolved once by the host and cached; nullopt when the post never names it.
+  std::optional<VariableId> find_variable(std::string_view name) const;
+  std::optional<ProcedureId> find_procedure(std::string_view name) const;  // "@line"
+
+  // Host assignment: converts to the variable's type, sets `change` (or forces it) and active=TRUE.
+  // Throws Error on an impossible conversion.
+  void assign(VariableId id, const Value& value, ChangeOverride change = ChangeOverride::Compute);
+  void set_active(VariableId id, bool active);
+  void set_changed(VariableId id, bool changed);
+  const Value& value(VariableId id) const;
+  bool active(VariableId id) const;
+  bool changed(VariableId id) const;
+
+  // Runs @init_post, then every @init_inc, once.
+  RunResult start();
+  // Runs one procedure (one P-code). Runtime errors throw Error with the statement's position.
+  RunResult call(ProcedureId id);
+  // Flushes the open output line (end of run).
+  void finish();
+
+  // Trace output (`trace "list":level` statements) goes here; nullptr (default) discards it.
+  void set_trace_stream(std::ostream* trace);
+  // Limits that stop a runaway post: loop iterations per P-code and call depth (error 405).
+  void set_limits(std::uint64_t max_loop_iterations, int max_call_depth);
+
+private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace gppl
