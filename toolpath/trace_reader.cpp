@@ -3,8 +3,6 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
-#include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 
@@ -13,9 +11,11 @@ namespace {
 
 constexpr std::size_t kChunk = 1 << 18;
 
+// ASCII character classes, locale-independent (traces are 8-bit text in any code page).
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
-bool is_ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool is_ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool is_ident_char(char c) { return is_ident_start(c) || is_digit(c); }
 
 std::size_t skip_blanks(std::string_view s, std::size_t i) {
   while (i < s.size() && is_blank(s[i])) ++i;
@@ -47,18 +47,18 @@ std::size_t number_length(std::string_view s, bool& is_numeric) {
   std::size_t i = 0, digits = 0;
   is_numeric = false;
   if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++digits;
+  while (i < s.size() && is_digit(s[i])) ++i, ++digits;
   if (i < s.size() && s[i] == '.') {
     is_numeric = true;
     ++i;
-    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++digits;
+    while (i < s.size() && is_digit(s[i])) ++i, ++digits;
   }
   if (digits == 0) return 0;
   if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
     std::size_t j = i + 1;
     if (j < s.size() && (s[j] == '+' || s[j] == '-')) ++j;
     std::size_t exp_start = j;
-    while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]))) ++j;
+    while (j < s.size() && is_digit(s[j])) ++j;
     if (j > exp_start) {
       is_numeric = true;
       i = j;
@@ -67,22 +67,31 @@ std::size_t number_length(std::string_view s, bool& is_numeric) {
   return i;
 }
 
-SourcePosition advanced(const SourcePosition& where, std::size_t by) {
-  SourcePosition p = where;
-  p.column += by;
-  return p;
-}
+// Where a value sits, for error messages; cheap to pass (no string copies on the hot path).
+struct Place {
+  std::string_view file;
+  std::size_t line = 0;
+  std::size_t column = 0;
+  [[noreturn]] void fail(std::size_t offset, const std::string& message) const {
+    throw InputError({std::string(file), line, column + offset}, message);
+  }
+};
 
-}  // namespace
-
-Value parse_value(std::string_view text, const SourcePosition& where) {
+// Parses `text` into `out`, reusing its string buffer.
+void parse_value_into(Value& out, std::string_view text, const Place& where) {
   text = trim_right(text);
-  if (text.empty()) return Value::make_string({});
+  out.flag = ChangeFlag::None;
+  if (text.empty()) {
+    out.kind = ValueKind::String;
+    out.text.clear();
+    return;
+  }
   const char q = text.front();
   if (q == '\'' || q == '"') {
-    if (text.size() < 2 || text.back() != q)
-      throw InputError(advanced(where, text.size()), std::string("expected closing ") + q + " of the string");
-    return Value::make_string(std::string(text.substr(1, text.size() - 2)));
+    if (text.size() < 2 || text.back() != q) where.fail(text.size(), std::string("expected closing ") + q + " of the string");
+    out.kind = ValueKind::String;
+    out.text.assign(text.substr(1, text.size() - 2));
+    return;
   }
   bool is_numeric = false;
   if (std::size_t n = number_length(text, is_numeric); n > 0) {
@@ -92,26 +101,46 @@ Value parse_value(std::string_view text, const SourcePosition& where) {
     else if (rest == "F" || rest == "f") flag = ChangeFlag::Unchanged;
     if (rest.empty() || flag != ChangeFlag::None) {
       std::string_view digits = text.substr(0, n);
+      const char* first = digits.data() + (digits.front() == '+' ? 1 : 0);
+      const char* last = digits.data() + digits.size();
+      out.flag = flag;
       if (!is_numeric) {
-        std::int64_t v = 0;
-        const char* first = digits.data() + (digits.front() == '+' ? 1 : 0);
-        auto [ptr, ec] = std::from_chars(first, digits.data() + digits.size(), v);
-        if (ec != std::errc() || ptr != digits.data() + digits.size())
-          throw InputError(where, "integer out of range: " + std::string(digits));
-        return Value::make_integer(v, flag);
+        auto [ptr, ec] = std::from_chars(first, last, out.integer);
+        if (ec != std::errc() || ptr != last) where.fail(0, "integer out of range: " + std::string(digits));
+        out.kind = ValueKind::Integer;
+        return;
       }
-      std::string copy(digits);  // strtod needs a terminated string; from_chars<double> is not in GCC 12's libstdc++ for all cases
-      errno = 0;
-      double v = std::strtod(copy.c_str(), nullptr);
-      if (errno == ERANGE && std::isinf(v)) throw InputError(where, "number out of range: " + copy);
-      return Value::make_numeric(v, flag);
+      auto [ptr, ec] = std::from_chars(first, last, out.numeric);
+      if (ec != std::errc() || ptr != last) where.fail(0, "number out of range: " + std::string(digits));
+      out.kind = ValueKind::Numeric;
+      return;
     }
   }
-  if (iequals(text, "true")) return Value::make_logical(true);
-  if (iequals(text, "false")) return Value::make_logical(false);
-  if (ident_length(text) == text.size()) return Value::make_enum(std::string(text));
-  // Free text: user parameters may hold unquoted words with blanks (`Salamat Abzar Check Shavad!!`).
-  return Value::make_string(std::string(text));
+  if (iequals(text, "true") || iequals(text, "false")) {
+    out.kind = ValueKind::Logical;
+    out.logical = iequals(text, "true");
+    return;
+  }
+  // A bare word is an enumeration; anything else is free text (user parameters may hold unquoted
+  // words with blanks: `Salamat Abzar Check Shavad!!`).
+  out.kind = ident_length(text) == text.size() ? ValueKind::Enum : ValueKind::String;
+  out.text.assign(text);
+}
+
+// The next parameter slot of `out`, reusing the buffers of an earlier command's parameters.
+Parameter& add_parameter(Command& out, std::size_t& used, std::string_view name) {
+  if (used == out.parameters.size()) out.parameters.emplace_back();
+  Parameter& p = out.parameters[used++];
+  p.name.assign(name);
+  return p;
+}
+
+}  // namespace
+
+Value parse_value(std::string_view text, const SourcePosition& where) {
+  Value v;
+  parse_value_into(v, text, Place{where.file, where.line, where.column});
+  return v;
 }
 
 TraceReader::TraceReader(std::istream& in, std::string file_name) : in_(in), file_(std::move(file_name)) {}
@@ -170,7 +199,11 @@ bool TraceReader::next(Command& out) {
     if (i == line_.size() || line_[i] == ';') continue;
     have_line_ = true;
   }
-  out.clear();
+  // Reset `out` but keep its parameter slots: refilling them in place avoids allocating per command.
+  out.name.clear();
+  out.depth = 1;
+  out.trace.clear();
+  used_parameters_ = 0;
   have_line_ = false;
   if (!parse_header(out)) {
     std::size_t col = skip_blanks(line_, 0) + 1;
@@ -189,6 +222,7 @@ bool TraceReader::next(Command& out) {
     parse_body_line(out, first);
     first = false;
   }
+  out.parameters.resize(used_parameters_);
   return true;
 }
 
@@ -204,7 +238,7 @@ bool TraceReader::parse_header(Command& out) {
     std::size_t j = i + 1;
     std::size_t start = j;
     if (j < s.size() && s[j] == '-') ++j;
-    while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]))) ++j;
+    while (j < s.size() && is_digit(s[j])) ++j;
     if (j == start || j >= s.size() || s[j] != ')') fail(i + 2, "expected a number and `)` in the command header");
     auto [p, ec] = std::from_chars(s.data() + start, s.data() + j, number);
     if (ec != std::errc()) fail(i + 2, "number out of range in the command header");
@@ -271,8 +305,8 @@ void TraceReader::parse_body_line(Command& out, bool first_after_header) {
     std::size_t colon = skip_blanks(s, i + n);
     if (colon < s.size() && s[colon] == ':') {
       std::size_t v = skip_blanks(s, colon + 1);
-      Value value = parse_value(s.substr(v), {file_, line_number_, v + 1});
-      out.parameters.push_back(Parameter{std::string(rest.substr(0, n)), std::move(value)});
+      Parameter& p = add_parameter(out, used_parameters_, rest.substr(0, n));
+      parse_value_into(p.value, s.substr(v), Place{file_, line_number_, v + 1});
       return;
     }
     fail(skip_blanks(s, i + n) + 1, "expected `:` after the parameter name `" + std::string(rest.substr(0, n)) + "`");
@@ -320,8 +354,8 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
         }
       }
     }
-    Value value = parse_value(text.substr(v, end - v), {file_, line_number_, column + v});
-    out.parameters.push_back(Parameter{std::string(name), std::move(value)});
+    Parameter& p = add_parameter(out, used_parameters_, name);
+    parse_value_into(p.value, text.substr(v, end - v), Place{file_, line_number_, column + v});
     i = skip_blanks(text, end);
   }
 }

@@ -45,6 +45,7 @@ private:
   std::size_t line_number_ = 0;
   bool have_line_ = false;       // line_ holds a header not yet consumed
   std::size_t next_index_ = 0;
+  std::size_t used_parameters_ = 0; // parameter slots of the command being read
   bool name_may_be_cut_ = false; // the header's name ran up to `==>` and may continue below
 };
 
