@@ -1,0 +1,365 @@
+// Display formats: the parser (once per format string) and the formatter (once per printed value).
+#include "gppl/display_format.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+#include <fmt/format.h>
+
+namespace gppl {
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Parsing
+
+[[noreturn]] void format_error(int number, std::string_view what, std::string_view spec) {
+  throw Error(number, Position{}, fmt::format("Format: {} in '{}'", what, spec));
+}
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+char lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+
+class FormatParser {
+public:
+  explicit FormatParser(std::string_view spec) : s_(spec) {}
+
+  DisplayFormat parse() {
+    // A prefix sits at the very start; blanks before it and right after it only separate.
+    std::size_t first = s_.find_first_not_of(' ');
+    if (first != std::string_view::npos && s_[first] == '<') {
+      pos_ = first;
+      affix(f_.prefix, f_.prefix_length, "prefix");
+      skip_blanks();
+    }
+    sign_and_lead();
+    integer_part();
+    if (!eat('.')) format_error(421, "No decimal point", s_);
+    fraction_part();
+    trailing_control();
+    skip_blanks();
+    if (eat('(')) options();
+    skip_blanks();
+    if (peek() == '<') {
+      affix(f_.postfix, f_.postfix_length, "postfix");
+      skip_blanks();
+    }
+    if (pos_ < s_.size()) format_error(423, fmt::format("Invalid format option, unexpected '{}'", s_[pos_]), s_);
+    return f_;
+  }
+
+private:
+  char peek() const { return pos_ < s_.size() ? s_[pos_] : '\0'; }
+  bool eat(char c) {
+    if (peek() != c) return false;
+    ++pos_;
+    return true;
+  }
+  void skip_blanks() {
+    while (peek() == ' ') ++pos_;
+  }
+
+  void affix(std::array<char, DisplayFormat::max_affix>& text, std::uint8_t& length, std::string_view which) {
+    ++pos_;  // '<'
+    std::size_t close = s_.find('>', pos_);
+    if (close == std::string_view::npos) format_error(423, fmt::format("Invalid format option, '>' missing after the {}", which), s_);
+    std::size_t n = std::min<std::size_t>(close - pos_, DisplayFormat::max_affix);
+    std::memcpy(text.data(), s_.data() + pos_, n);
+    length = static_cast<std::uint8_t>(n);
+    pos_ = close + 1;
+  }
+
+  // Sign control and leading control, at most one of each, in either order. A run of blanks is
+  // one leading-blank control (the manual writes ' 5.3z').
+  void sign_and_lead() {
+    bool have_sign = false, have_lead = false;
+    for (;;) {
+      char c = peek();
+      if ((c == '+' || c == '-') && !have_sign) {
+        f_.sign = c == '+' ? DisplayFormat::Sign::Always : DisplayFormat::Sign::NegativeOnly;
+        have_sign = true;
+        ++pos_;
+      } else if (c == ' ' && !have_lead) {
+        f_.lead = DisplayFormat::Pad::Blank;
+        have_lead = true;
+        skip_blanks();
+      } else if ((c == 'z' || c == 'Z') && !have_lead) {
+        f_.lead = DisplayFormat::Pad::Zero;
+        have_lead = true;
+        ++pos_;
+      } else {
+        return;
+      }
+    }
+  }
+
+  // Reads a digit count; returns false when there are no digits.
+  bool count(std::uint8_t& out) {
+    std::size_t start = pos_;
+    int value = 0;
+    while (is_digit(peek())) {
+      value = std::min(value * 10 + (s_[pos_] - '0'), 1000);
+      ++pos_;
+    }
+    if (pos_ == start) return false;
+    if (value > DisplayFormat::max_digits)
+      format_error(423, fmt::format("Invalid format option, digit count {} is above {}", s_.substr(start, pos_ - start),
+                                    DisplayFormat::max_digits),
+                   s_);
+    out = static_cast<std::uint8_t>(value);
+    return true;
+  }
+
+  void integer_part() {
+    char c = peek();
+    if (!is_digit(c)) {
+      if (c == '.' || c == '\0') format_error(408, "without any digit", s_);
+      format_error(423, fmt::format("Invalid format option, unexpected '{}'", c), s_);
+    }
+    count(f_.int_digits);
+    if (eat('/') && !count(f_.min_int_digits)) format_error(408, "without any digit after '/'", s_);
+  }
+
+  void fraction_part() {
+    if (!count(f_.frac_digits)) format_error(422, "No fraction digits", s_);
+    if (eat('/') && !count(f_.min_frac_digits)) format_error(422, "No fraction digits after '/'", s_);
+  }
+
+  // 'z' keeps the zeros; a blank pads with blanks, but only as the last character of the format
+  // (elsewhere blanks only separate: '<X> 5.2 (p)').
+  void trailing_control() {
+    char c = peek();
+    if (c == 'z' || c == 'Z') {
+      f_.trail = DisplayFormat::Pad::Zero;
+      ++pos_;
+    } else if (c == ' ' && s_.find_first_not_of(' ', pos_) == std::string_view::npos) {
+      f_.trail = DisplayFormat::Pad::Blank;
+      pos_ = s_.size();
+    }
+  }
+
+  void options() {
+    for (;;) {
+      char c = peek();
+      if (c == '\0') format_error(423, "Invalid format option, ')' missing", s_);
+      ++pos_;
+      switch (lower(c)) {
+        case ')': return;
+        case ' ': break;
+        case 'd': f_.delete_if_zero = true; break;
+        case 'n': f_.no_point = true; break;
+        case 'p': f_.conditional_point = true; break;
+        case 'i': f_.invert = true; break;
+        case '*': add_scale(scale_number(), false); break;
+        case '/': add_scale(scale_number(), true); break;
+        default: format_error(423, fmt::format("Invalid format option '{}'", c), s_);
+      }
+    }
+  }
+
+  // [+|-] ( digits [ "." [digits] ] | "." digits )
+  double scale_number() {
+    skip_blanks();
+    std::size_t start = pos_;
+    if (peek() == '+' || peek() == '-') ++pos_;
+    std::size_t digits_start = pos_;
+    std::size_t digits = 0;
+    while (is_digit(peek())) ++pos_, ++digits;
+    if (eat('.'))
+      while (is_digit(peek())) ++pos_, ++digits;
+    if (digits == 0) format_error(409, "scale factor invalid (a number must follow '*' or '/')", s_);
+    double value = 0;
+    std::from_chars(s_.data() + digits_start, s_.data() + pos_, value);
+    if (s_[start] == '-') value = -value;
+    if (!std::isfinite(value)) format_error(409, "scale factor invalid", s_);
+    return value;
+  }
+
+  void add_scale(double factor, bool divide) {
+    if (divide && factor == 0) format_error(409, "scale factor invalid (division by zero)", s_);
+    if (f_.scale_count < DisplayFormat::max_scales) {
+      f_.scales[f_.scale_count++] = {factor, divide};
+      return;
+    }
+    auto& last = f_.scales[DisplayFormat::max_scales - 1];
+    if (last.divide == divide)
+      last.factor *= factor;
+    else
+      last.factor /= factor;
+  }
+
+  std::string_view s_;
+  std::size_t pos_ = 0;
+  DisplayFormat f_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Decimal rounding
+
+constexpr int significant_digits = 15;
+
+// A non-negative decimal value: digits[0] has the weight 10^exponent, later digits the next lower
+// powers; digits past `count` are zeros. count == 0 is zero.
+struct Decimal {
+  char digits[significant_digits + 1];
+  int count = 0;
+  int exponent = 0;
+};
+
+// |x| to 15 significant digits, then rounded half away from zero at 10^-fraction_digits.
+Decimal round_decimal(double magnitude, int fraction_digits) {
+  Decimal d;
+  if (magnitude == 0) return d;
+  char buf[40];
+  auto res = std::to_chars(buf, buf + sizeof buf, magnitude, std::chars_format::scientific, significant_digits - 1);
+  // "d.dddddddddddddde+XX"
+  char* e = std::find(buf, res.ptr, 'e');
+  std::from_chars(e + (e[1] == '+' ? 2 : 1), res.ptr, d.exponent);
+  d.digits[0] = buf[0];
+  std::memcpy(d.digits + 1, buf + 2, significant_digits - 1);
+  d.count = significant_digits;
+
+  int keep = d.exponent + fraction_digits + 1;  // digits with a weight of at least 10^-N
+  if (keep >= significant_digits) return d;
+  if (keep < 0) {
+    d.count = 0;
+    return d;
+  }
+  bool up = d.digits[keep] >= '5';
+  d.count = keep;
+  if (up) {
+    int i = keep - 1;
+    while (i >= 0 && d.digits[i] == '9') --i;
+    if (i >= 0) {
+      ++d.digits[i];
+      d.count = i + 1;
+    } else {  // 9.99 -> 10, or nothing kept -> one unit in the last place
+      d.digits[0] = '1';
+      d.count = 1;
+      d.exponent = keep == 0 ? -fraction_digits : d.exponent + 1;
+    }
+  }
+  while (d.count > 0 && d.digits[d.count - 1] == '0') --d.count;
+  return d;
+}
+
+char digit_at(const Decimal& d, int weight) {
+  int index = d.exponent - weight;
+  return (index >= 0 && index < d.count) ? d.digits[index] : '0';
+}
+
+// ---------------------------------------------------------------------------------------------
+// Formatting
+
+// Longest output: affixes, pad up to M, sign, 101 integer digits of 1e100 (or m), point, N digits.
+constexpr std::size_t max_output = 2 * DisplayFormat::max_affix + 2 * DisplayFormat::max_digits + 110;
+
+// Writes the number part (without affixes) into `p`, given its integer and fraction digits.
+// Returns the end.
+char* assemble(char* p, const DisplayFormat& f, bool negative, const char* int_digits, int int_len,
+               char* frac, int frac_len_total) {
+  int zeros = std::max(0, f.min_int_digits - int_len);  // /m: zero-fill
+  int shown_int = int_len + zeros;
+
+  bool frac_zero = true;
+  for (int i = 0; i < frac_len_total; ++i) frac_zero = frac_zero && frac[i] == '0';
+  int frac_len = frac_len_total;
+  while (frac_len > f.min_frac_digits && frac[frac_len - 1] == '0') --frac_len;
+  if (f.trail == DisplayFormat::Pad::Zero) frac_len = frac_len_total;
+  if (f.trail == DisplayFormat::Pad::Blank) {
+    std::fill(frac + frac_len, frac + frac_len_total, ' ');
+    frac_len = frac_len_total;
+  }
+  bool point = !f.no_point && !(f.conditional_point && frac_zero);
+  if (f.conditional_point && frac_zero) frac_len = 0;
+  // Never print a number without any digit (m = 0 and a zero value): write "0".
+  bool any_digit = shown_int > 0 || std::any_of(frac, frac + frac_len, [](char c) { return c != ' '; });
+  if (!any_digit) zeros = shown_int = 1;
+
+  int pad = std::max(0, f.int_digits - shown_int);
+  if (f.lead == DisplayFormat::Pad::Blank) p = std::fill_n(p, pad, ' ');
+  if (negative)
+    *p++ = '-';
+  else if (f.sign == DisplayFormat::Sign::Always)
+    *p++ = '+';
+  if (f.lead == DisplayFormat::Pad::Zero) p = std::fill_n(p, pad, '0');
+  p = std::fill_n(p, zeros, '0');
+  p = std::copy_n(int_digits, int_len, p);
+  if (point) *p++ = '.';
+  return std::copy_n(frac, frac_len, p);
+}
+
+// Returns the end of the number part, or nullptr when option d suppresses it.
+char* format_number(char* p, const DisplayFormat& f, const Value& v) {
+  char int_digits[128];
+  char frac[DisplayFormat::max_digits];
+  int int_len = 0;
+  bool negative = false;
+  bool zero = false;
+  const int n = f.frac_digits;
+
+  if (v.type != Type::Numeric && f.scale_count == 0) {  // exact integer path
+    std::int64_t i = v.type == Type::Logical ? (v.logical ? 1 : 0) : v.integer;
+    std::uint64_t magnitude = i < 0 ? 0 - static_cast<std::uint64_t>(i) : static_cast<std::uint64_t>(i);
+    negative = (i < 0) != f.invert && i != 0;
+    zero = i == 0;
+    if (!zero) int_len = static_cast<int>(std::to_chars(int_digits, int_digits + sizeof int_digits, magnitude).ptr - int_digits);
+    std::fill_n(frac, n, '0');
+  } else {
+    double x = v.type == Type::Numeric ? v.numeric
+               : v.type == Type::Logical ? (v.logical ? 1.0 : 0.0)
+                                         : static_cast<double>(v.integer);
+    for (int s = 0; s < f.scale_count; ++s) x = f.scales[s].divide ? x / f.scales[s].factor : x * f.scales[s].factor;
+    if (f.invert) x = -x;
+    if (!(std::fabs(x) <= 1e100))
+      throw Error(410, Position{}, fmt::format("Val: number out of range ({} is beyond 1.E100)", x));
+    Decimal d = round_decimal(std::fabs(x), n);
+    zero = d.count == 0;
+    negative = x < 0 && !zero;  // a value that rounds to zero is never negative
+    for (int w = d.exponent; w >= 0 && !zero; --w) int_digits[int_len++] = digit_at(d, w);
+    for (int i = 0; i < n; ++i) frac[i] = digit_at(d, -1 - i);
+  }
+  if (zero && f.delete_if_zero) return nullptr;
+  return assemble(p, f, negative, int_digits, int_len, frac, n);
+}
+
+}  // namespace
+
+DisplayFormat parse_display_format(std::string_view spec) { return FormatParser(spec).parse(); }
+
+void append_formatted(std::string& out, const DisplayFormat& f, const Value& v) {
+  if (v.type == Type::String) {
+    out += v.text;
+    return;
+  }
+  char buf[max_output];
+  char* p = std::copy_n(f.prefix.data(), f.prefix_length, buf);
+  p = format_number(p, f, v);
+  if (p == nullptr) return;  // option d: not even the affixes
+  p = std::copy_n(f.postfix.data(), f.postfix_length, p);
+  out.append(buf, static_cast<std::size_t>(p - buf));
+}
+
+std::string format_value(const DisplayFormat& f, const Value& v) {
+  std::string s;
+  append_formatted(s, f, v);
+  return s;
+}
+
+double round_half_away(double x, int fraction_digits) {
+  if (!std::isfinite(x)) return x;
+  fraction_digits = std::clamp(fraction_digits, -400, 400);
+  Decimal d = round_decimal(std::fabs(x), fraction_digits);
+  if (d.count == 0) return 0.0;
+  char buf[48];
+  char* p = std::copy_n(d.digits, d.count, buf);
+  *p++ = 'e';
+  p = std::to_chars(p, buf + sizeof buf, d.exponent - d.count + 1).ptr;
+  double r = 0;
+  std::from_chars(buf, p, r);
+  return x < 0 ? -r : r;
+}
+
+}  // namespace gppl
