@@ -1,0 +1,148 @@
+// Repeatable records (spec 1.5) and the PRP external variables they declare (spec 3.16).
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "prp/grammar.hpp"
+#include "prp/loader.hpp"
+
+namespace prp {
+namespace {
+
+constexpr std::size_t kMaxNameLength = 60;  // GPPL identifier limit
+
+std::optional<VarType> type_keyword(std::string_view t) {
+  if (t.size() > 2 && t.front() == '(' && t.back() == ')') t = t.substr(1, t.size() - 2);
+  if (toolpath::iequals(t, "INTEGER")) return VarType::Integer;
+  if (toolpath::iequals(t, "NUMERIC")) return VarType::Numeric;
+  if (toolpath::iequals(t, "LOGICAL")) return VarType::Logical;
+  if (toolpath::iequals(t, "STRING")) return VarType::String;
+  return std::nullopt;
+}
+
+std::optional<bool> flag_word(std::string_view t) {
+  if (toolpath::iequals(t, "Y")) return true;
+  if (toolpath::iequals(t, "N")) return false;
+  return std::nullopt;
+}
+
+bool declares_types(std::string_view key) {
+  return key == "options" || key == "job_opt_type" || key == "turn_type" || key == "thread_type" ||
+         key == "groove_type";
+}
+
+toolpath::Value initial_value(VarType type) {
+  switch (type) {
+    case VarType::Integer: return toolpath::Value::make_integer(0);
+    case VarType::Numeric: return toolpath::Value::make_numeric(0.0);
+    case VarType::Logical: return toolpath::Value::make_logical(false);
+    case VarType::String: return toolpath::Value::make_string("");
+  }
+  return {};
+}
+
+}  // namespace
+
+void Loader::record(std::string_view base, std::string_view lang, std::string_view key, std::string_view value,
+                    std::size_t column) {
+  const std::vector<Token> t = tokenize(value, column);
+  const std::size_t end_column = column + value.size();
+  Record r;
+  r.key = std::string(base);
+  r.lang = std::string(lang);
+  r.raw = std::string(value);
+  r.where = at(column);
+  std::size_t name_token = 0;
+  std::size_t first_param = 0;
+
+  if (t.size() == 2 && type_keyword(t[1].text)) {
+    if (!declares_types(base))
+      return error(t[1].column, fmt::format("`{}` records declare cycles, not typed variables", key));
+    r.form = Record::Form::Declaration;
+    r.type = *type_keyword(t[1].text);
+    first_param = t.size();
+  } else if (base == "options") {
+    return error(t.size() < 2 ? end_column : t[1].column,
+                 "expected `name TYPE` (TYPE: INTEGER, LOGICAL, NUMERIC or STRING)");
+  } else if (t.size() >= 2 && flag_word(t[1].text) && base != "wc_macro") {
+    r.flag = flag_word(t[1].text);
+    first_param = 2;
+    if (base == "drill_type") {  // legacy form: the name is the base type
+      auto b = drill_base(t[0].text);
+      if (!b)
+        return error(t[0].column, fmt::format("expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, "
+                                              "BORING, R_BORING or F_BORING), found `{}`", t[0].text));
+      r.base = std::string(*b);
+    }
+  } else if (t.size() >= 3 && flag_word(t[2].text) && (base == "drill_type" || base == "wc_macro")) {
+    r.flag = flag_word(t[2].text);
+    first_param = 3;
+    if (base == "drill_type") {
+      auto b = drill_base(t[1].text);
+      if (!b)
+        return error(t[1].column, fmt::format("expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, "
+                                              "BORING, R_BORING or F_BORING), found `{}`", t[1].text));
+      r.base = std::string(*b);
+    } else {
+      r.base = std::string(t[1].text);
+    }
+  } else if (base == "wc_pos_type" && !t.empty()) {
+    first_param = 1;
+  } else {
+    const bool three = base == "drill_type" || base == "wc_macro";
+    std::string shape = base == "drill_type" ? "`name base Y|N {param}`"
+                        : base == "wc_macro" ? "`name word Y|N {param}`"
+                                             : "`name Y|N {param}` or `name TYPE`";
+    std::size_t at_token = three ? 2 : 1;
+    if (t.size() <= at_token) return error(end_column, "expected " + shape);
+    return error(t[at_token].column, fmt::format("expected Y or N, found `{}` (a record is {})",
+                                                 t[at_token].text, shape));
+  }
+
+  // Names become GPPL identifiers.
+  std::vector<std::size_t> names{name_token};
+  for (std::size_t i = first_param; i < t.size(); ++i) names.push_back(i);
+  for (std::size_t i : names) {
+    if (t[i].text.size() > kMaxNameLength || !grammar::matches<grammar::identifier>(t[i].text))
+      return error(t[i].column, fmt::format("`{}` is not a valid name (a letter, then letters, digits or '_', "
+                                            "at most 60 characters)", t[i].text));
+  }
+  r.name = std::string(t[name_token].text);
+  for (std::size_t i = first_param; i < t.size(); ++i) r.params.emplace_back(t[i].text);
+
+  for (const Record& other : params_.records_) {
+    if (other.key == r.key && other.lang == r.lang && other.form == r.form &&
+        toolpath::iequals(other.name, r.name))
+      return error(t[name_token].column, fmt::format("`{}` declares `{}` twice (first at line {})", key, r.name,
+                                                     other.where.line));
+  }
+
+  // PRP external variables: a typed declaration has its type's initial value; cycle parameters
+  // are numeric and inactive until a command sets them.
+  auto declare = [&](const Token& tok, VarType type, bool inactive) {
+    auto& all = params_.externals_;
+    auto it = std::find_if(all.begin(), all.end(),
+                           [&](const ExternalVariable& v) { return toolpath::iequals(v.name, tok.text); });
+    if (it == all.end()) {
+      all.push_back({std::string(tok.text), type,
+                     inactive ? std::nullopt : std::optional<toolpath::Value>(initial_value(type)), r.key,
+                     at(tok.column)});
+      return true;
+    }
+    if (it->type != type) {
+      error(tok.column, fmt::format("`{}` is declared {} here but {} at line {}", tok.text, type_name(type),
+                                    type_name(it->type), it->where.line));
+      return false;
+    }
+    return true;
+  };
+  if (r.form == Record::Form::Declaration) {
+    if (!declare(t[0], r.type, false)) return;
+  } else {
+    for (std::size_t i = first_param; i < t.size(); ++i)
+      if (!declare(t[i], VarType::Numeric, true)) return;
+  }
+  params_.records_.push_back(std::move(r));
+}
+
+}  // namespace prp
