@@ -1,0 +1,215 @@
+#include "postproc/output_files.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
+
+#include "toolpath/value.hpp"
+
+namespace postproc {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::size_t npos = static_cast<std::size_t>(-1);
+
+[[noreturn]] void io_failure(const std::string& what, const fs::path& path) {
+  throw std::runtime_error("cannot " + what + " `" + path.string() + "`: " + std::strerror(errno));
+}
+
+fs::path make_private_dir(const fs::path& parent) {
+  std::string pattern = (parent / ".postproc-XXXXXX").string();
+  if (!mkdtemp(pattern.data())) io_failure("create a temporary folder in", parent);
+  return pattern;
+}
+
+}  // namespace
+
+OutputFiles::OutputFiles(fs::path directory, LineEnd line_end, bool for_stream)
+    : directory_(std::move(directory)), line_end_(line_end) {
+  if (directory_.empty()) directory_ = ".";
+  temp_dir_ = make_private_dir(for_stream ? fs::temp_directory_path() : directory_);
+  create("");
+  open_handle(entries_.front(), "wb");
+}
+
+OutputFiles::~OutputFiles() {
+  for (auto& e : entries_) close_handle(e);
+  std::error_code ignored;
+  fs::remove_all(temp_dir_, ignored);
+}
+
+void OutputFiles::set_main_path(fs::path path) { entries_.front().final_path = std::move(path); }
+
+std::size_t OutputFiles::find(std::string_view name) const {
+  for (std::size_t i = 1; i < entries_.size(); ++i)
+    if (toolpath::iequals(entries_[i].name, name)) return i;
+  return npos;
+}
+
+// Names are relative to the output folder. Windows paths are accepted: backslashes separate folders,
+// and an absolute path (`C:\NC\O1.SPF`, `/tmp/x`) keeps only its file name, so that a post written
+// for a Windows workstation never writes outside the chosen folder.
+fs::path OutputFiles::resolve(std::string_view name) const {
+  std::string n(name);
+  for (char& c : n)
+    if (c == '\\') c = '/';
+  bool absolute = (!n.empty() && n.front() == '/') || (n.size() >= 2 && n[1] == ':');
+  fs::path p(n);
+  return directory_ / (absolute ? p.filename() : p);
+}
+
+std::size_t OutputFiles::create(std::string_view name) {
+  Entry e;
+  e.name = std::string(name);
+  if (!name.empty()) e.final_path = resolve(name);
+  e.temp_path = temp_dir_ / std::to_string(entries_.size());
+  entries_.push_back(std::move(e));
+  return entries_.size() - 1;
+}
+
+void OutputFiles::open_handle(Entry& e, const char* mode) {
+  if (e.file) return;
+  e.file = std::fopen(e.temp_path.c_str(), mode);
+  if (!e.file) io_failure("create", e.temp_path);
+  std::setvbuf(e.file, nullptr, _IOFBF, 1 << 16);
+}
+
+void OutputFiles::close_handle(Entry& e) {
+  if (!e.file) return;
+  bool failed = std::fclose(e.file) != 0;
+  e.file = nullptr;
+  if (failed && !committed_) io_failure("write", e.temp_path);
+}
+
+void OutputFiles::switch_to(std::size_t index) {
+  if (index == current_) return;
+  if (current_ != 0) close_handle(entries_[current_]);  // the main file stays open, others are reopened
+  current_ = index;
+  open_handle(entries_[current_], "ab");
+}
+
+void OutputFiles::write_line(std::string_view line) {
+  std::FILE* f = entries_[current_].file;
+  bool ok = fwrite_unlocked(line.data(), 1, line.size(), f) == line.size();
+  if (line_end_ == LineEnd::CRLF) ok = ok && fputc_unlocked('\r', f) != EOF;
+  ok = ok && fputc_unlocked('\n', f) != EOF;
+  if (!ok) io_failure("write", entries_[current_].temp_path);
+}
+
+void OutputFiles::execute(const Directive& d) {
+  std::size_t index = find(d.name);
+  switch (d.verb) {
+    case Directive::Verb::Open:
+      if (index == npos) {
+        index = create(d.name);
+      } else if (entries_[index].deleted) {  // deleted earlier in this run: starts empty again
+        entries_[index].deleted = false;
+        std::error_code ignored;
+        fs::remove(entries_[index].temp_path, ignored);
+      }
+      switch_to(index);  // an existing file of this run is appended to
+      return;
+    case Directive::Verb::Close:
+      if (index != npos && index == current_) switch_to(0);
+      return;
+    case Directive::Verb::Delete:
+      if (index == npos) index = create(d.name);  // a file of an earlier run: removed on commit
+      if (index == current_) switch_to(0);
+      close_handle(entries_[index]);
+      entries_[index].deleted = true;
+      {
+        std::error_code ignored;
+        fs::remove(entries_[index].temp_path, ignored);
+      }
+      return;
+    case Directive::Verb::Copy:
+      copy_into_current(d.name);
+      return;
+    case Directive::Verb::MakeDir: {
+      std::error_code error;
+      fs::create_directories(resolve(d.name), error);
+      if (error) throw std::runtime_error("cannot make folder `" + resolve(d.name).string() + "`: " + error.message());
+      return;
+    }
+  }
+}
+
+void OutputFiles::copy_into_current(std::string_view name) {
+  std::size_t index = find(name);
+  fs::path source;
+  if (index != npos && !entries_[index].deleted) {
+    if (index == current_) throw std::runtime_error("cannot copy `" + std::string(name) + "` into itself");
+    if (entries_[index].file && std::fflush(entries_[index].file) != 0) io_failure("write", entries_[index].temp_path);
+    source = entries_[index].temp_path;
+  } else {
+    source = resolve(name);  // a file made before this run
+  }
+  std::ifstream in(source, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot copy `" + std::string(name) + "`: no such file in this run or in `" +
+                                    directory_.string() + "`");
+  std::FILE* out = entries_[current_].file;
+  char buffer[1 << 14];
+  while (in) {
+    in.read(buffer, sizeof buffer);
+    auto n = static_cast<std::size_t>(in.gcount());
+    if (n && fwrite_unlocked(buffer, 1, n, out) != n) io_failure("write", entries_[current_].temp_path);
+  }
+}
+
+std::string OutputFiles::display_name(const Entry& e) const {
+  if (!e.name.empty()) return e.name;
+  return e.final_path.empty() ? std::string("(main file)") : e.final_path.filename().string();
+}
+
+std::string OutputFiles::current_name() const { return display_name(entries_[current_]); }
+
+std::vector<fs::path> OutputFiles::commit() {
+  for (auto& e : entries_) close_handle(e);
+  if (entries_.front().final_path.empty()) throw std::runtime_error("the main output file has no name");
+  std::vector<fs::path> written;
+  for (auto& e : entries_) {
+    std::error_code error;
+    if (e.deleted) {
+      fs::remove(e.final_path, error);
+      continue;
+    }
+    if (e.final_path.has_parent_path()) fs::create_directories(e.final_path.parent_path(), error);
+    fs::rename(e.temp_path, e.final_path, error);
+    if (error) {
+      // Different file systems (the temporary folder may be elsewhere): copy, then remove.
+      fs::copy_file(e.temp_path, e.final_path, fs::copy_options::overwrite_existing, error);
+      if (error) throw std::runtime_error("cannot write `" + e.final_path.string() + "`: " + error.message());
+    }
+    written.push_back(e.final_path);
+  }
+  committed_ = true;
+  std::error_code ignored;
+  fs::remove_all(temp_dir_, ignored);
+  return written;
+}
+
+void OutputFiles::commit_to(std::ostream& out) {
+  for (auto& e : entries_) close_handle(e);
+  std::size_t live = 0;
+  for (const auto& e : entries_) live += !e.deleted;
+  bool first = true;
+  for (const auto& e : entries_) {
+    if (e.deleted) continue;
+    if (live > 1) out << (first ? "" : "\n") << "==> " << display_name(e) << " <==\n";
+    first = false;
+    std::ifstream in(e.temp_path, std::ios::binary);
+    if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();  // an empty file would fail `out`
+  }
+  out.flush();
+  committed_ = true;
+  std::error_code ignored;
+  fs::remove_all(temp_dir_, ignored);
+}
+
+}  // namespace postproc

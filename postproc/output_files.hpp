@@ -1,0 +1,73 @@
+// The NC files of one run. Lines go to the current file; directives switch, delete and copy files the
+// way SolidCAM does (solidcam-behaviour.md section 2). Everything is written to temporaries in a
+// private folder and only moved onto the real names by commit(): a run that fails leaves the files of
+// the previous run untouched.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "postproc/directive.hpp"
+
+namespace postproc {
+
+class OutputFiles {
+public:
+  enum class LineEnd { LF, CRLF };
+
+  // Files that directives name are placed in `directory` (which must exist). With `for_stream`, the
+  // temporaries live in the system's temporary folder and the run ends with commit_to(stream).
+  explicit OutputFiles(std::filesystem::path directory, LineEnd line_end = LineEnd::LF, bool for_stream = false);
+  ~OutputFiles();
+  OutputFiles(const OutputFiles&) = delete;
+  OutputFiles& operator=(const OutputFiles&) = delete;
+
+  // The final path of the main file (it may be set late: its name comes with @start_of_file).
+  void set_main_path(std::filesystem::path path);
+  const std::filesystem::path& main_path() const { return entries_.front().final_path; }
+
+  // Appends one line and its line end to the current file.
+  void write_line(std::string_view line);
+  // Executes a directive. Throws std::runtime_error when it cannot (a file to copy that does not exist).
+  void execute(const Directive& directive);
+
+  // The current file's name: as the directive wrote it, or the main file's name.
+  std::string current_name() const;
+
+  // Moves every file onto its final name and removes the files the run deleted. Returns the paths written.
+  std::vector<std::filesystem::path> commit();
+  // Writes every file, in the order they were created, to `out`; when there are several, each starts
+  // with a `==> NAME <==` line, as `head` does. Nothing is written to disk.
+  void commit_to(std::ostream& out);
+
+private:
+  struct Entry {
+    std::string name;  // as the post wrote it ("" for the main file)
+    std::filesystem::path final_path;
+    std::filesystem::path temp_path;
+    std::FILE* file = nullptr;  // open while it is the current file (the main file stays open)
+    bool deleted = false;
+  };
+
+  std::size_t find(std::string_view name) const;  // npos when the run has no such file
+  std::filesystem::path resolve(std::string_view name) const;
+  std::size_t create(std::string_view name);
+  void open_handle(Entry& e, const char* mode);
+  void close_handle(Entry& e);
+  void switch_to(std::size_t index);
+  void copy_into_current(std::string_view name);
+  std::string display_name(const Entry& e) const;
+
+  std::filesystem::path directory_;
+  std::filesystem::path temp_dir_;
+  LineEnd line_end_;
+  std::vector<Entry> entries_;
+  std::size_t current_ = 0;
+  bool committed_ = false;
+};
+
+}  // namespace postproc

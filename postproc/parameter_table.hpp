@@ -1,0 +1,27 @@
+// The parameters of every toolpath command (gpptool-commands.md, sections 3 and 5-14), with their GPPL
+// types: the host variables the engine declares before compiling a post. A parameter that is not in
+// the table still reaches the post; its type is then fixed by its first value (an implicit host variable).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace postproc {
+
+// `Enum` parameters hold enumeration constants (`CW`, `COMP_LEFT`, ...), which GPPL sees as integers.
+enum class ParameterKind : std::uint8_t { Integer, Numeric, Logical, String, Enum };
+
+struct ParameterSpec {
+  std::string_view name;
+  ParameterKind kind;
+  std::string_view commands;  // the commands that carry it, blank-separated (documentation, `check`)
+};
+
+// Every documented parameter, sorted by name (case-insensitively).
+std::span<const ParameterSpec> parameter_table();
+
+// Case-insensitive lookup; nullptr when the name is not documented.
+const ParameterSpec* find_parameter(std::string_view name);
+
+}  // namespace postproc
