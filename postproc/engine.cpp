@@ -1,0 +1,315 @@
+#include "postproc/engine.hpp"
+
+#include <fmt/format.h>
+
+#include <optional>
+#include <string>
+#include <unordered_map>
+
+#include "gppl/gppl.hpp"
+#include "postproc/directive.hpp"
+#include "postproc/enumerations.hpp"
+#include "postproc/host_variables.hpp"
+#include "postproc/parameter_table.hpp"
+#include "postproc/structure.hpp"
+#include "toolpath/value.hpp"
+
+namespace postproc {
+namespace {
+
+using toolpath::iequals;
+
+// Only depth 0 and 1 commands are the stream; deeper ones record calls the original post made itself.
+class StreamCommands final : public toolpath::CommandSource {
+public:
+  explicit StreamCommands(toolpath::CommandSource& inner) : inner_(inner) {}
+  bool next(toolpath::Command& out) override {
+    while (inner_.next(out))
+      if (out.is_stream_command()) return true;
+    return false;
+  }
+
+private:
+  toolpath::CommandSource& inner_;
+};
+
+// Forgets, for every variable, the value its next assignment is compared with. gppl.hpp does not
+// offer this yet (requested from gppl: `Interpreter::reset_change_memory()`); until it does, the
+// reset is a no-op and docs/engine.md says so.
+template <class Interp>
+void reset_change_memory(Interp& interpreter) {
+  if constexpr (requires { interpreter.reset_change_memory(); }) interpreter.reset_change_memory();
+}
+
+struct TransparentHash {
+  using is_transparent = void;
+  std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+};
+
+// Receives the post's finished lines: executes directives, writes the rest, tells the observer.
+class Sink final : public gppl::OutputSink {
+public:
+  Sink(OutputFiles& files, LineObserver* observer) : files_(files), observer_(observer) {}
+
+  void write_line(std::string_view line, const gppl::LineOrigin& origin) override {
+    std::size_t first = line.find_first_not_of(" \t");
+    bool maybe_directive = first != std::string_view::npos && line[first] == '!';
+    std::optional<Directive> directive = maybe_directive ? parse_directive(line) : std::nullopt;
+    if (observer_) {
+      file_name_ = files_.current_name();
+      LineEvent e{file_name_, line, directive.has_value(),
+                  {command_index, command_name, origin.procedure, origin.source_line}};
+      observer_->on_line(e);
+    }
+    if (directive) {
+      files_.execute(*directive);
+    } else {
+      files_.write_line(line);
+      ++lines;
+    }
+  }
+
+  std::size_t command_index = 0;
+  std::string_view command_name;
+  std::size_t lines = 0;
+
+private:
+  OutputFiles& files_;
+  LineObserver* observer_;
+  std::string file_name_;
+};
+
+std::string default_main_name(const std::string& g_file_name, const std::string& extension) {
+  std::string name = g_file_name;
+  bool has_extension = std::filesystem::path(name).has_extension();
+  if (!has_extension && !extension.empty()) name += "." + extension;
+  return name;
+}
+
+class Session {
+public:
+  Session(const Engine& engine, std::shared_ptr<const gppl::Program> program, OutputFiles& files,
+          const RunOptions& options)
+      : engine_(engine),
+        options_(options),
+        files_(files),
+        enums_(engine.prp().drill_type_names()),
+        sink_(files, options.observer),
+        interpreter_(std::move(program), sink_) {
+    interpreter_.set_trace_stream(options.trace);
+    interpreter_.set_limits(engine.options().max_loop_iterations, engine.options().max_call_depth);
+    for (const auto& c : enums_.constants())
+      if (auto id = interpreter_.find_variable(c.name)) interpreter_.assign(*id, gppl::Value::of_integer(c.code));
+    prev_command_ = interpreter_.find_variable("prev_command");
+    current_command_ = interpreter_.find_variable("current_command");
+    next_command_ = interpreter_.find_variable("next_command");
+    for (const auto& [cycle, parameters] : engine.prp().drill_cycle_parameters())
+      for (const auto& p : parameters) drill_parameters_.push_back(p);
+  }
+
+  RunSummary run(toolpath::CommandSource& input) {
+    RunSummary summary;
+    sink_.command_name = "@init_post";
+    guarded([&] { interpreter_.start(); });
+    StreamCommands stream(input);
+    toolpath::LookaheadSource lookahead(stream);
+    toolpath::Command command;
+    std::string previous;
+    while (lookahead.next(command)) {
+      ++summary.commands;
+      sink_.command_index = command.index;
+      sink_.command_name = command.name;
+      const toolpath::Command* next = lookahead.peek();
+      guarded([&] { execute(command, previous, next ? std::string_view(next->name) : std::string_view{}, summary); });
+      previous = command.name;
+      if (options_.progress && (summary.commands & 4095) == 0) options_.progress(summary.commands);
+    }
+    sink_.command_name = {};
+    guarded([&] { interpreter_.finish(); });
+    if (files_.main_path().empty()) name_main_file(default_main_name(input_stem(), engine_.prp().file_extension()));
+    summary.lines = sink_.lines;
+    return summary;
+  }
+
+private:
+  struct Slot {
+    std::optional<gppl::VariableId> id;
+    bool is_string = false;
+  };
+
+  template <class F>
+  void guarded(F&& f) {
+    try {
+      f();
+    } catch (const gppl::Error& e) {
+      fail(e.what());
+    } catch (const DirectiveError& e) {
+      fail(e.what());
+    } catch (const toolpath::InputError&) {
+      throw;  // the stream itself is malformed: its own position says it all
+    } catch (const RunError&) {
+      throw;
+    } catch (const std::runtime_error& e) {
+      fail(e.what());
+    }
+  }
+
+  [[noreturn]] void fail(const std::string& what) const {
+    std::string where = sink_.command_name.empty()
+                            ? std::string("at the end of the run")
+                            : fmt::format("command #{} {}", sink_.command_index, sink_.command_name);
+    throw RunError(fmt::format("{}: {}: {}", options_.input_name, where, what));
+  }
+
+  std::string input_stem() const {
+    std::string stem = std::filesystem::path(options_.input_name).stem().string();
+    return stem.empty() ? "output" : stem;
+  }
+
+  void name_main_file(const std::string& default_name) {
+    files_.set_main_path(options_.main_path ? options_.main_path(default_name) : std::filesystem::path(default_name));
+  }
+
+  const Slot& slot(std::string_view name) {
+    auto it = slots_.find(name);
+    if (it != slots_.end()) return it->second;
+    Slot s;
+    s.id = interpreter_.find_variable(name);
+    if (const ParameterSpec* p = find_parameter(name))
+      s.is_string = p->kind == ParameterKind::String;
+    else if (s.id)
+      s.is_string = interpreter_.value(*s.id).type == gppl::Type::String;
+    return slots_.emplace(std::string(name), s).first->second;
+  }
+
+  gppl::Value convert(const toolpath::Value& v, bool to_string) {
+    switch (v.kind) {
+      case toolpath::ValueKind::Integer: return gppl::Value::of_integer(v.integer);
+      case toolpath::ValueKind::Numeric: return gppl::Value::of_numeric(v.numeric);
+      case toolpath::ValueKind::Logical: return gppl::Value::of_logical(v.logical);
+      case toolpath::ValueKind::String: return gppl::Value::of_string(v.text);
+      case toolpath::ValueKind::Enum:
+        return to_string ? gppl::Value::of_string(v.text) : gppl::Value::of_integer(enums_.code(v.text));
+    }
+    return {};
+  }
+
+  static gppl::ChangeOverride change_override(toolpath::ChangeFlag flag) {
+    switch (flag) {
+      case toolpath::ChangeFlag::Changed: return gppl::ChangeOverride::ForceChanged;
+      case toolpath::ChangeFlag::Unchanged: return gppl::ChangeOverride::ForceUnchanged;
+      case toolpath::ChangeFlag::None: break;
+    }
+    return gppl::ChangeOverride::Compute;
+  }
+
+  void set_string(const std::optional<gppl::VariableId>& id, std::string_view text) {
+    if (id) interpreter_.assign(*id, gppl::Value::of_string(std::string(text)));
+  }
+
+  // Optional parameters a command did not supply are inactive (gppl-language.md 1.2).
+  void deactivate_missing(const toolpath::Command& command) {
+    auto deactivate = [&](std::string_view name) {
+      if (command.find(name)) return;
+      if (const Slot& s = slot(name); s.id) interpreter_.set_active(*s.id, false);
+    };
+    if (iequals(command.name, "@call_proc") || iequals(command.name, "@call_prms")) {
+      for (std::string_view name : {"message", "parm1", "parm2", "parm3"}) deactivate(name);
+    } else if (iequals(command.name, "@drill")) {
+      for (const auto& name : drill_parameters_) deactivate(name);
+    }
+  }
+
+  void execute(toolpath::Command& command, std::string_view previous, std::string_view next, RunSummary& summary) {
+    structure_.before(command);
+    if (iequals(command.name, "@start_of_file")) start_of_file(command);
+    bool reset = engine_.options().reset_modal_memory_at_subroutines;
+    if (reset && ProgramStructure::starts_body(command)) reset_change_memory(interpreter_);
+
+    for (const auto& p : command.parameters) {
+      const Slot& s = slot(p.name);
+      if (s.id) interpreter_.assign(*s.id, convert(p.value, s.is_string), change_override(p.value.flag));
+    }
+    deactivate_missing(command);
+    set_string(prev_command_, previous);
+    set_string(current_command_, command.name);
+    set_string(next_command_, next);
+
+    auto procedure = procedures_.find(command.name);
+    if (procedure == procedures_.end())
+      procedure = procedures_.emplace(command.name, interpreter_.find_procedure(command.name)).first;
+    if (!procedure->second) {
+      ++summary.skipped;
+      if (options_.trace) *options_.trace << "(0)" << command.name << '\n';
+    } else if (interpreter_.call(*procedure->second) == gppl::RunResult::Abort) {
+      throw std::runtime_error("the post stopped the run (`abort` in " + command.name + ")");
+    }
+    if (reset && ProgramStructure::calls_subroutine(command)) reset_change_memory(interpreter_);
+  }
+
+  // Names the main file, and completes the subroutine numbers the stream left out.
+  void start_of_file(toolpath::Command& command) {
+    const toolpath::Value* name = command.find("g_file_name");
+    std::string base = name && !name->text.empty() ? name->text : input_stem();
+    name_main_file(default_main_name(base, engine_.prp().file_extension()));
+    if (!command.find("first_user_proc") && options_.reopen) derive_procedure_numbers(command);
+  }
+
+  // first_user_proc is the label after the last subroutine of the stream; the post's
+  // num_user_procs (set in @init_post) user subroutines follow it (gpptool-commands.md 2.8).
+  void derive_procedure_numbers(toolpath::Command& command) {
+    std::int64_t low = 0, high = 0;
+    auto source = options_.reopen();
+    toolpath::Command c;
+    while (source->next(c)) {
+      if (!c.is_stream_command() || !(ProgramStructure::starts_body(c) || ProgramStructure::calls_subroutine(c))) continue;
+      const toolpath::Value* label = c.find("label");
+      if (!label) continue;
+      auto l = static_cast<std::int64_t>(label->kind == toolpath::ValueKind::Integer ? label->integer : label->as_number());
+      low = low == 0 ? l : std::min(low, l);
+      high = std::max(high, l);
+    }
+    std::int64_t first_label = 1;
+    if (auto dflt = engine_.prp().value("proc_num_dflt")) first_label = std::atoll(dflt->c_str());
+    std::int64_t user_procs = 0;
+    if (auto id = interpreter_.find_variable("num_user_procs")) user_procs = interpreter_.value(*id).integer;
+    std::int64_t first_user = high > 0 ? high + 1 : first_label;
+    command.set("first_user_proc", toolpath::Value::make_integer(first_user));
+    if (!command.find("first_proc_number"))
+      command.set("first_proc_number", toolpath::Value::make_integer(low > 0 ? low : first_user));
+    if (!command.find("last_proc_number"))
+      command.set("last_proc_number", toolpath::Value::make_integer(user_procs > 0 ? first_user + user_procs - 1 : high));
+  }
+
+  const Engine& engine_;
+  const RunOptions& options_;
+  OutputFiles& files_;
+  Enumerations enums_;
+  Sink sink_;
+  gppl::Interpreter interpreter_;
+  ProgramStructure structure_;
+  std::optional<gppl::VariableId> prev_command_, current_command_, next_command_;
+  std::vector<std::string> drill_parameters_;
+  std::unordered_map<std::string, Slot, TransparentHash, std::equal_to<>> slots_;
+  std::unordered_map<std::string, std::optional<gppl::ProcedureId>, TransparentHash, std::equal_to<>> procedures_;
+};
+
+}  // namespace
+
+Engine::Engine(EngineOptions options) : options_(std::move(options)) {
+  if (!options_.prp.empty()) prp_ = PrpSettings::load(options_.prp);
+  Enumerations enums(prp_.drill_type_names());
+  gppl::CompileOptions compile;
+  compile.host_variables = host_variables(enums, prp_);
+  compile.include_paths = options_.include_paths;
+  program_ = gppl::compile_file(options_.post, compile);
+}
+
+Engine::~Engine() = default;
+
+RunSummary Engine::run(toolpath::CommandSource& input, OutputFiles& output, const RunOptions& options) const {
+  Session session(*this, program_, output, options);
+  return session.run(input);
+}
+
+}  // namespace postproc

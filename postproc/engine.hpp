@@ -1,0 +1,104 @@
+// The engine: binds a PRP file, a GPP post and a toolpath command stream into NC files.
+//
+//   Engine engine({.post = "fanuc.gpp", .prp = "fanuc.prp"});   // compiles the post once
+//   OutputFiles out(".");
+//   engine.run(reader, out, {.input_name = "job.trace"});
+//   out.commit();
+//
+// For each stream command, in order, the engine assigns its parameters to the post's variables
+// (assignment semantics; a `T`/`F` flag forces the change attribute), sets prev_command,
+// current_command and next_command (it reads one command ahead), and calls the procedure of the
+// same name; a command the post has no procedure for only sets its variables. docs/engine.md has
+// the rules in full.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "postproc/output_files.hpp"
+#include "postproc/prp_settings.hpp"
+#include "postproc/regression.hpp"
+#include "toolpath/source.hpp"
+
+namespace gppl {
+class Program;
+}
+
+namespace postproc {
+
+struct EngineOptions {
+  std::string post;                        // the .gpp file
+  std::string prp;                         // the .prp file; empty: none
+  std::vector<std::string> include_paths;  // where `inc` files are looked up besides the post's folder
+  // Modal memory is forgotten where a subroutine body starts and after a subroutine call, because
+  // the machine state there is not the one the previous block left (docs/engine.md).
+  bool reset_modal_memory_at_subroutines = true;
+  std::uint64_t max_loop_iterations = 100'000'000;  // per procedure run: a runaway `while` stops
+  int max_call_depth = 200;                         // a runaway recursion stops (error 405)
+};
+
+// One line the run produced (or one directive it executed), with who produced it.
+struct LineEvent {
+  std::string_view file;  // the output file it went to (for a directive: the file current before it)
+  std::string_view text;
+  bool directive = false;
+  LineOrigin origin;
+};
+
+class LineObserver {
+public:
+  virtual ~LineObserver() = default;
+  virtual void on_line(const LineEvent& event) = 0;
+};
+
+struct RunOptions {
+  std::string input_name;  // for messages ("job.trace")
+  // Chooses the main file's final path from its default name (`g_file_name` + `.` + gpp_file_ext).
+  std::function<std::filesystem::path(const std::string& default_name)> main_path;
+  LineObserver* observer = nullptr;
+  std::ostream* trace = nullptr;  // the post's `trace` output and the commands skipped
+  std::function<void(std::size_t commands)> progress;  // called every 4096 commands
+  // Reopens the input from its start, for the one case where the engine must look ahead over the
+  // whole stream: a @start_of_file without `first_user_proc` (docs/engine.md). May be empty.
+  std::function<std::unique_ptr<toolpath::CommandSource>()> reopen;
+};
+
+struct RunSummary {
+  std::size_t commands = 0;  // stream commands read
+  std::size_t skipped = 0;   // commands the post has no procedure for
+  std::size_t lines = 0;     // lines written
+};
+
+// An error during a run: names the command (index and name) and, for errors of the post, the GPP
+// position and the GPPTool error number.
+class RunError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+class Engine {
+public:
+  // Loads the PRP and compiles the post. Throws toolpath::InputError (PRP) or gppl::Errors (post).
+  explicit Engine(EngineOptions options);
+  ~Engine();
+
+  // Posts `input` into `output` (not committed: the caller commits on success).
+  RunSummary run(toolpath::CommandSource& input, OutputFiles& output, const RunOptions& options) const;
+
+  const PrpSettings& prp() const { return prp_; }
+  const EngineOptions& options() const { return options_; }
+
+private:
+  EngineOptions options_;
+  PrpSettings prp_;
+  std::shared_ptr<const gppl::Program> program_;
+};
+
+}  // namespace postproc
