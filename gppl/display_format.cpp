@@ -208,10 +208,8 @@ struct Decimal {
   int exponent = 0;
 };
 
-// |x| to 15 significant digits, then rounded half away from zero at 10^-fraction_digits.
-Decimal round_decimal(double magnitude, int fraction_digits) {
-  Decimal d;
-  if (magnitude == 0) return d;
+// The correctly rounded 15 significant digits of `magnitude` (> 0), through the library.
+void fifteen_digits_exact(double magnitude, Decimal& d) {
   char buf[40];
   auto res = std::to_chars(buf, buf + sizeof buf, magnitude, std::chars_format::scientific, significant_digits - 1);
   // "d.dddddddddddddde+XX"
@@ -219,6 +217,41 @@ Decimal round_decimal(double magnitude, int fraction_digits) {
   std::from_chars(e + (e[1] == '+' ? 2 : 1), res.ptr, d.exponent);
   d.digits[0] = buf[0];
   std::memcpy(d.digits + 1, buf + 2, significant_digits - 1);
+}
+
+// The same digits for the common magnitudes (1e-8 to 1e15) in a few multiplications: one exact
+// power of ten, one rounding to an integer. When the product lies so close to a half that the
+// multiplication's rounding could change the result, the exact path decides.
+bool fifteen_digits_fast(double magnitude, Decimal& d) {
+  static constexpr double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  static constexpr double negative_powers[] = {1e0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9};
+  if (!(magnitude >= 1e-8 && magnitude < 1e15)) return false;
+  auto power = [](int e) { return e >= 0 ? powers[e] : negative_powers[-e]; };
+  int binary_exponent = 0;
+  std::frexp(magnitude, &binary_exponent);  // magnitude in [2^(b-1), 2^b)
+  int exponent = static_cast<int>(std::floor((binary_exponent - 1) * 0.30102999566398120));
+  if (exponent < 14 && magnitude >= power(exponent + 1)) ++exponent;  // now 10^exponent <= magnitude
+  if (exponent > -8 && magnitude < power(exponent)) --exponent;
+  double q = magnitude * powers[14 - exponent];  // in [1e14, 1e15) with an error below 0.07
+  double whole = std::floor(q);
+  double fraction = q - whole;
+  if (q < 1e14 || q >= 1e15 || std::fabs(fraction - 0.5) < 0.1) return false;
+  auto digits = static_cast<std::uint64_t>(whole) + (fraction > 0.5 ? 1 : 0);
+  if (digits >= 1'000'000'000'000'000) {  // rounded up to the next power of ten
+    digits /= 10;
+    ++exponent;
+  }
+  std::to_chars(d.digits, d.digits + significant_digits, digits);
+  d.exponent = exponent;
+  return true;
+}
+
+// |x| to 15 significant digits, then rounded half away from zero at 10^-fraction_digits.
+Decimal round_decimal(double magnitude, int fraction_digits) {
+  Decimal d;
+  if (magnitude == 0) return d;
+  if (!fifteen_digits_fast(magnitude, d)) fifteen_digits_exact(magnitude, d);
   d.count = significant_digits;
 
   int keep = d.exponent + fraction_digits + 1;  // digits with a weight of at least 10^-N

@@ -349,8 +349,8 @@ Value f_tonum(const FunctionSignature& f, Args a) {
   std::size_t end = i;
   while (i < n && blank(s[i])) ++i;
   if (mantissa_digits == 0 || i != n) out_of_range(f, fmt::format("'{}' is not a number", s));
-  std::string mantissa = s.substr(start, end - start);
-  if (mantissa.front() == '.') mantissa.insert(0, "0");
+  std::string mantissa = "0";  // so that ".5" parses
+  mantissa.append(s, start, end - start);
   double value = 0;
   auto res = std::from_chars(mantissa.data(), mantissa.data() + mantissa.size(), value);
   if (res.ec == std::errc::result_out_of_range) overflow(f);
