@@ -359,7 +359,9 @@ Value f_tonum(const FunctionSignature& f, Args a) {
 
 Value f_tostr(const FunctionSignature&, Args a) {
   number(a[0]);  // a string is not formatted: error 386
-  DisplayFormat format = parse_display_format(a.size() > 1 ? std::string_view(text(a[1])) : std::string_view("5.3"));
+  // No format, or an empty one (an unset numeric_def_f), means the manual's default '5.3'.
+  std::string_view spec = a.size() > 1 ? std::string_view(text(a[1])) : std::string_view();
+  DisplayFormat format = parse_display_format(spec.empty() ? std::string_view("5.3") : spec);
   return Value::of_string(format_value(format, a[0]));
 }
 

@@ -27,7 +27,7 @@ struct FunctionSignature {
   bool integer_if_integer_args = false;
   // tostr: its optional last parameter (the display format) is written `tostr(x : fmt)`, not with
   // a comma. The interpreter passes the format string, or the value of `numeric_def_f` when the
-  // call has none (call_function falls back to '5.3' when only one argument arrives).
+  // call has none (call_function falls back to '5.3' when that is missing or empty).
   bool format_argument = false;
   // date, time: written without parentheses (a lenient parser also accepts `date()`).
   bool no_parentheses = false;

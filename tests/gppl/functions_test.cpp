@@ -257,6 +257,7 @@ std::vector<StringCase> string_cases() {
       // the spec's extra vectors and corners it decides
       {"tostr(5000) with numeric_def_f", call("tostr", {integer(5000), str("5.3")}), str("5000.")},
       {"tostr(5000) without format", call("tostr", {integer(5000)}), str("5000.")},
+      {"tostr(2.5) with an unset numeric_def_f", call("tostr", {num(2.5), str("")}), str("2.5")},
       {"tostr(num:'8.0(p)') num=7", call("tostr", {integer(7), str("8.0(p)")}), str("7")},
       {"tostr(12345678:'8.0(p)')", call("tostr", {integer(12345678), str("8.0(p)")}), str("12345678")},
       {"dup fractional count", call("dup", {str("ab"), integer(2)}), str("abab")},
