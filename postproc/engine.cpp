@@ -57,7 +57,7 @@ public:
     std::optional<Directive> directive = maybe_directive ? parse_directive(line) : std::nullopt;
     if (observer_) {
       file_name_ = files_.current_name();
-      LineEvent e{file_name_, line, directive.has_value(),
+      LineEvent e{file_name_, line, directive.has_value(), files_.current_is_main(),
                   {command_index, command_name, origin.procedure, origin.source_line}};
       observer_->on_line(e);
     }
@@ -93,7 +93,7 @@ public:
       : engine_(engine),
         options_(options),
         files_(files),
-        enums_(engine.prp().drill_type_names()),
+        enums_(engine.drill_cycle_names()),
         sink_(files, options.observer),
         interpreter_(std::move(program), sink_) {
     interpreter_.set_trace_stream(options.trace);
@@ -103,8 +103,17 @@ public:
     prev_command_ = interpreter_.find_variable("prev_command");
     current_command_ = interpreter_.find_variable("current_command");
     next_command_ = interpreter_.find_variable("next_command");
-    for (const auto& [cycle, parameters] : engine.prp().drill_cycle_parameters())
-      for (const auto& p : parameters) drill_parameters_.push_back(p);
+    for (const auto* cycle : engine.machine().records("drill_type"))
+      for (const auto& p : cycle->params) drill_parameters_.push_back(p);
+    // PRP external variables start with their declared value, or inactive until a command sets them.
+    for (const auto& v : engine.machine().external_variables()) {
+      auto id = interpreter_.find_variable(v.name);
+      if (!id) continue;
+      if (v.initial)
+        interpreter_.assign(*id, convert(*v.initial, v.type == prp::VarType::String));
+      else
+        interpreter_.set_active(*id, false);
+    }
   }
 
   RunSummary run(toolpath::CommandSource& input) {
@@ -112,7 +121,8 @@ public:
     sink_.command_name = "@init_post";
     guarded([&] { interpreter_.start(); });
     StreamCommands stream(input);
-    toolpath::LookaheadSource lookahead(stream);
+    auto filtered = prp::build_filter_chain(engine_.machine(), stream);
+    toolpath::LookaheadSource lookahead(*filtered);
     toolpath::Command command;
     std::string previous;
     while (lookahead.next(command)) {
@@ -126,7 +136,7 @@ public:
     }
     sink_.command_name = {};
     guarded([&] { interpreter_.finish(); });
-    if (files_.main_path().empty()) name_main_file(default_main_name(input_stem(), engine_.prp().file_extension()));
+    if (files_.main_path().empty()) name_main_file(default_main_name(input_stem(), engine_.file_extension()));
     summary.lines = sink_.lines;
     return summary;
   }
@@ -251,7 +261,7 @@ private:
   void start_of_file(toolpath::Command& command) {
     const toolpath::Value* name = command.find("g_file_name");
     std::string base = name && !name->text.empty() ? name->text : input_stem();
-    name_main_file(default_main_name(base, engine_.prp().file_extension()));
+    name_main_file(default_main_name(base, engine_.file_extension()));
     if (!command.find("first_user_proc") && options_.reopen) derive_procedure_numbers(command);
   }
 
@@ -269,8 +279,7 @@ private:
       low = low == 0 ? l : std::min(low, l);
       high = std::max(high, l);
     }
-    std::int64_t first_label = 1;
-    if (auto dflt = engine_.prp().value("proc_num_dflt")) first_label = std::atoll(dflt->c_str());
+    std::int64_t first_label = prp::procedure_numbers(engine_.machine()).dflt.value_or(1);
     std::int64_t user_procs = 0;
     if (auto id = interpreter_.find_variable("num_user_procs")) user_procs = interpreter_.value(*id).integer;
     std::int64_t first_user = high > 0 ? high + 1 : first_label;
@@ -297,8 +306,8 @@ private:
 }  // namespace
 
 Engine::Engine(EngineOptions options) : options_(std::move(options)) {
-  if (!options_.prp.empty()) prp_ = PrpSettings::load(options_.prp);
-  Enumerations enums(prp_.drill_type_names());
+  if (!options_.prp.empty()) prp_ = prp::load_file(options_.prp, options_.units);
+  Enumerations enums(drill_cycle_names());
   gppl::CompileOptions compile;
   compile.host_variables = host_variables(enums, prp_);
   compile.include_paths = options_.include_paths;
@@ -306,6 +315,17 @@ Engine::Engine(EngineOptions options) : options_(std::move(options)) {
 }
 
 Engine::~Engine() = default;
+
+std::string Engine::file_extension() const {
+  const prp::Parameter* p = prp_.find("gpp_file_ext");
+  return p ? p->text : std::string();
+}
+
+std::vector<std::string> Engine::drill_cycle_names() const {
+  std::vector<std::string> names;
+  for (const auto* r : prp_.records("drill_type")) names.push_back(r->name);
+  return names;
+}
 
 RunSummary Engine::run(toolpath::CommandSource& input, OutputFiles& output, const RunOptions& options) const {
   Session session(*this, program_, output, options);

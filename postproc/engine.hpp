@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "postproc/output_files.hpp"
-#include "postproc/prp_settings.hpp"
 #include "postproc/regression.hpp"
+#include "prp/prp.hpp"
 #include "toolpath/source.hpp"
 
 namespace gppl {
@@ -36,6 +36,7 @@ namespace postproc {
 struct EngineOptions {
   std::string post;                        // the .gpp file
   std::string prp;                         // the .prp file; empty: none
+  prp::Units units = prp::Units::Metric;   // which half of the PRP's metric/inch pairs applies
   std::vector<std::string> include_paths;  // where `inc` files are looked up besides the post's folder
   // Modal memory is forgotten where a subroutine body starts and after a subroutine call, because
   // the machine state there is not the one the previous block left (docs/engine.md).
@@ -49,6 +50,7 @@ struct LineEvent {
   std::string_view file;  // the output file it went to (for a directive: the file current before it)
   std::string_view text;
   bool directive = false;
+  bool main_file = false;  // `file` is the main program (not a file a directive opened)
   LineOrigin origin;
 };
 
@@ -92,12 +94,16 @@ public:
   // Posts `input` into `output` (not committed: the caller commits on success).
   RunSummary run(toolpath::CommandSource& input, OutputFiles& output, const RunOptions& options) const;
 
-  const PrpSettings& prp() const { return prp_; }
+  const prp::MachineParameters& machine() const { return prp_; }
+  // The output file extension (`gpp_file_ext`), empty when the PRP has none.
+  std::string file_extension() const;
+  // The drill-cycle names of the PRP (`drill_type = <name> ...`), in file order.
+  std::vector<std::string> drill_cycle_names() const;
   const EngineOptions& options() const { return options_; }
 
 private:
   EngineOptions options_;
-  PrpSettings prp_;
+  prp::MachineParameters prp_;
   std::shared_ptr<const gppl::Program> program_;
 };
 

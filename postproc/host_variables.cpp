@@ -19,6 +19,16 @@ gppl::Type gppl_type(ParameterKind kind) {
   return gppl::Type::Numeric;
 }
 
+gppl::Type gppl_type(prp::VarType type) {
+  switch (type) {
+    case prp::VarType::Integer: return gppl::Type::Integer;
+    case prp::VarType::Numeric: return gppl::Type::Numeric;
+    case prp::VarType::Logical: return gppl::Type::Logical;
+    case prp::VarType::String: return gppl::Type::String;
+  }
+  return gppl::Type::Numeric;
+}
+
 std::string lower(std::string s) {
   for (char& c : s)
     if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
@@ -27,7 +37,7 @@ std::string lower(std::string s) {
 
 }  // namespace
 
-std::vector<gppl::HostVariable> host_variables(const Enumerations& enums, const PrpSettings& prp) {
+std::vector<gppl::HostVariable> host_variables(const Enumerations& enums, const prp::MachineParameters& machine) {
   std::vector<gppl::HostVariable> out;
   std::set<std::string> seen;
   auto add = [&](std::string name, gppl::Type type, bool read_only) {
@@ -36,10 +46,7 @@ std::vector<gppl::HostVariable> host_variables(const Enumerations& enums, const 
   };
   for (const auto& p : parameter_table()) add(std::string(p.name), gppl_type(p.kind), false);
   for (const auto& c : enums.constants()) add(c.name, gppl::Type::Integer, true);
-  // User drill-cycle parameters (`drill_type = Peck Peck Y Delay` declares `Delay`): numeric values
-  // entered in the job dialog.
-  for (const auto& [cycle, parameters] : prp.drill_cycle_parameters())
-    for (const auto& p : parameters) add(p, gppl::Type::Numeric, false);
+  for (const auto& v : machine.external_variables()) add(v.name, gppl_type(v.type), false);
   return out;
 }
 

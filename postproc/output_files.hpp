@@ -37,6 +37,7 @@ public:
 
   // The current file's name: as the directive wrote it, or the main file's name.
   std::string current_name() const;
+  bool current_is_main() const { return current_ == 0; }
 
   // Moves every file onto its final name and removes the files the run deleted. Returns the paths written.
   std::vector<std::filesystem::path> commit();

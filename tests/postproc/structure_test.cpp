@@ -1,40 +1,9 @@
-// The minimal PRP reader and the structure bookkeeping that completes @end_proc / @end_loop.
+// The structure bookkeeping that completes @end_proc / @end_loop.
 #include <gtest/gtest.h>
 
-#include "postproc/prp_settings.hpp"
 #include "postproc/structure.hpp"
-#include "toolpath/error.hpp"
 
 namespace {
-
-TEST(PrpSettings, ReadsTheManualsFanucPrp) {
-  auto prp = postproc::PrpSettings::load("golden/solidcam-fanuc/fanuc.prp");
-  EXPECT_EQ(prp.file_extension(), "TAP");
-  EXPECT_EQ(prp.value("proc_num_dflt"), "1");
-  EXPECT_EQ(prp.value("PROC_NUM_DFLT"), "1");
-  EXPECT_EQ(prp.value("dflt_start"), "0.0000 200.0000 100.0000, 0.0000 7.8740 3.9370");
-  EXPECT_FALSE(prp.value("no_such_key").has_value());
-  EXPECT_EQ(prp.drill_type_names(),
-            (std::vector<std::string>{"Drilling", "F_Drill", "Peck", "Tapping", "Boring", "R_Boring", "F_Boring"}));
-  auto cycles = prp.drill_cycle_parameters();
-  ASSERT_EQ(cycles.size(), 7u);
-  EXPECT_EQ(cycles[1].second, std::vector<std::string>{"Delay"});
-  EXPECT_TRUE(cycles[0].second.empty());
-}
-
-TEST(PrpSettings, OldDrillFormAndErrors) {
-  auto prp = postproc::PrpSettings::parse("drill_type = Peck Y Delay Q_Peck ; comment\n", "x.prp");
-  auto cycles = prp.drill_cycle_parameters();
-  ASSERT_EQ(cycles.size(), 1u);
-  EXPECT_EQ(cycles[0].first, "Peck");
-  EXPECT_EQ(cycles[0].second, (std::vector<std::string>{"Delay", "Q_Peck"}));
-  try {
-    postproc::PrpSettings::parse("@pre_processor\n  gen_procs Y\n", "x.prp");
-    ADD_FAILURE();
-  } catch (const toolpath::InputError& e) {
-    EXPECT_STREQ(e.what(), "x.prp:2:3: expected `name = value`, found `gen_procs Y`");
-  }
-}
 
 toolpath::Command make(const char* name, std::vector<toolpath::Parameter> parameters = {}) {
   toolpath::Command c;
