@@ -1,0 +1,106 @@
+#include "bench/synthetic_job.hpp"
+
+#include <cmath>
+
+namespace bench {
+namespace {
+
+using toolpath::Value;
+
+double round3(double v) { return std::round(v * 1000.0) / 1000.0; }
+
+void header(toolpath::Command& c, std::size_t step) {
+  switch (step) {
+    case 0:
+      c.name = "@start_of_file";
+      c.set("program_number", Value::make_integer(1234));
+      c.set("g_file_name", Value::make_string("BENCH"));
+      c.set("first_proc_number", Value::make_integer(1));
+      c.set("last_proc_number", Value::make_integer(1));
+      c.set("first_user_proc", Value::make_integer(1));
+      c.set("home_number", Value::make_integer(1));
+      break;
+    case 1:
+      c.name = "@def_tool";
+      c.set("tool_number", Value::make_integer(4));
+      c.set("tool_offset", Value::make_numeric(5.0));
+      break;
+    case 2:
+      c.name = "@machine_plane";
+      c.set("machine_plane", Value::make_enum("XY"));
+      break;
+    case 3: c.name = "@start_program"; break;
+    case 4:
+      c.name = "@start_of_job";
+      c.set("job_name", Value::make_string("F-BENCH"));
+      c.set("job_type", Value::make_string("profile"));
+      break;
+    default:
+      c.name = "@change_tool";
+      c.set("tool_number", Value::make_integer(4));
+      c.set("tool_diameter", Value::make_numeric(10.0));
+      c.set("xnext", Value::make_numeric(0.0));
+      c.set("ynext", Value::make_numeric(0.0));
+      c.set("znext", Value::make_numeric(50.0));
+      c.set("spin", Value::make_integer(6000));
+      break;
+  }
+}
+
+constexpr std::size_t kHeader = 6;
+
+// Motion i of a contour made of 40-mm lines joined by 5-mm quarter arcs, stepping down 0.5 mm per lap.
+void motion(toolpath::Command& c, std::size_t i) {
+  const std::size_t lap = i / 8, k = i % 8;
+  const double z = round3(-0.5 * static_cast<double>(lap % 40 + 1));
+  const double feed = lap % 2 ? 1200.0 : 1500.0;
+  const double corners[4][2] = {{45, 0}, {50, 45}, {5, 50}, {0, 5}};  // where each line ends
+  const double centres[4][2] = {{45, 5}, {45, 45}, {5, 45}, {5, 5}};  // centre of the arc after it
+  const double ends[4][2] = {{50, 5}, {45, 50}, {0, 45}, {5, 0}};     // where that arc ends
+  const std::size_t side = k / 2;
+  if (k % 2 == 0) {
+    c.name = "@line";
+    c.set("xpos", Value::make_numeric(corners[side][0]));
+    c.set("ypos", Value::make_numeric(corners[side][1]));
+    c.set("zpos", Value::make_numeric(z));
+    c.set("feed", Value::make_numeric(feed));
+    return;
+  }
+  c.name = "@arc";
+  c.set("xpos", Value::make_numeric(ends[side][0]));
+  c.set("ypos", Value::make_numeric(ends[side][1]));
+  c.set("zpos", Value::make_numeric(z));
+  c.set("feed", Value::make_numeric(feed));
+  c.set("xcenter", Value::make_numeric(centres[side][0]));
+  c.set("ycenter", Value::make_numeric(centres[side][1]));
+  c.set("xcenter_rel", Value::make_numeric(round3(centres[side][0] - corners[side][0])));
+  c.set("ycenter_rel", Value::make_numeric(round3(centres[side][1] - corners[side][1])));
+  c.set("radius", Value::make_numeric(5.0));
+  c.set("start_angle", Value::make_numeric(std::fmod(270.0 + 90.0 * static_cast<double>(side), 360.0)));
+  c.set("end_angle", Value::make_numeric(std::fmod(360.0 + 90.0 * static_cast<double>(side), 360.0)));
+  c.set("arc_direction", Value::make_enum("CCW"));
+  c.set("arc_plane", Value::make_enum("XY"));
+  c.set("arc_size", Value::make_numeric(90.0));
+}
+
+}  // namespace
+
+bool SyntheticJob::next(toolpath::Command& out) {
+  const std::size_t total = kHeader + motions_ + 3;
+  if (step_ >= total) return false;
+  out.clear();
+  out.depth = 1;
+  out.index = index_++;
+  if (step_ < kHeader) {
+    header(out, step_);
+  } else if (step_ < kHeader + motions_) {
+    motion(out, step_ - kHeader);
+  } else {
+    static const char* const trailer[] = {"@end_of_job", "@end_program", "@end_of_file"};
+    out.name = trailer[step_ - kHeader - motions_];
+  }
+  ++step_;
+  return true;
+}
+
+}  // namespace bench
