@@ -1,0 +1,51 @@
+// Arc geometry in a working plane, with Eigen: centre from R, sweep, angles.
+#pragma once
+
+#include <Eigen/Dense>
+#include <optional>
+
+namespace pikocnc {
+
+// G17, G18, G19: in-plane axes (first, second) and the normal (helix) axis, right-handed.
+enum class Plane : unsigned char { XY = 0, ZX = 1, YZ = 2 };
+
+struct PlaneAxes {
+  int first, second, normal;
+};
+
+inline PlaneAxes axes_of(Plane p) {
+  switch (p) {
+    case Plane::XY: return {0, 1, 2};
+    case Plane::ZX: return {2, 0, 1};
+    case Plane::YZ: return {1, 2, 0};
+  }
+  return {0, 1, 2};
+}
+
+inline const char* plane_name(Plane p) { return p == Plane::XY ? "XY" : p == Plane::ZX ? "ZX" : "YZ"; }
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The 2-D coordinates of `p` in the plane.
+inline Eigen::Vector2d in_plane(const Eigen::Vector3d& p, Plane plane) {
+  const PlaneAxes a = axes_of(plane);
+  return {p[a.first], p[a.second]};
+}
+
+// Centre of the arc of radius |r| from `start` to `end` (2-D, in-plane): r > 0 the arc of at most
+// 180 degrees, r < 0 the larger one. nullopt when the chord is longer than 2|r| by more than `tolerance`
+// (within the tolerance the half circle is used).
+std::optional<Eigen::Vector2d> centre_from_radius(const Eigen::Vector2d& start, const Eigen::Vector2d& end,
+                                                  double r, bool ccw, double tolerance);
+
+// Swept angle (radians, > 0) from `start` to `end` around `centre`, turning counter-clockwise when
+// `ccw`. Equal start and end angles give a full circle.
+double sweep_angle(const Eigen::Vector2d& start, const Eigen::Vector2d& end, const Eigen::Vector2d& centre, bool ccw);
+
+// Angle of `p` around `centre` in degrees, in [0, 360).
+double angle_degrees(const Eigen::Vector2d& p, const Eigen::Vector2d& centre);
+
+// Rounds to 1e-9 (a nanometre) and turns -0 into 0, so printed values are short and stable.
+double clean(double v);
+
+}  // namespace pikocnc

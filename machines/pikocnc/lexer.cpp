@@ -1,0 +1,193 @@
+// One pass over the line: blanks may sit anywhere, even inside a number (`Y 30,2` is Y30.2).
+#include "machines/pikocnc/lexer.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <string>
+
+namespace pikocnc {
+namespace {
+
+constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                             1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v' || c == '\0'; }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+
+// Where a comment starts at `i`: `(`, `'`, `;`, `//`, or the typographic quotes U+2018/U+2019.
+std::size_t comment_start_length(std::string_view s, std::size_t i) {
+  const char c = s[i];
+  if (c == '(' || c == ';' || c == '\'') return 1;
+  if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') return 2;
+  if (static_cast<unsigned char>(c) == 0xE2 && i + 2 < s.size() && static_cast<unsigned char>(s[i + 1]) == 0x80 &&
+      (static_cast<unsigned char>(s[i + 2]) == 0x98 || static_cast<unsigned char>(s[i + 2]) == 0x99))
+    return 3;
+  return 0;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (is_blank(s.front()) || s.front() == '\r')) s.remove_prefix(1);
+  while (!s.empty() && (is_blank(s.back()) || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+struct Number {
+  bool ok = false;
+  bool negative = false;
+  bool has_sign = false;
+  std::uint64_t int_part = 0;
+  std::uint64_t mantissa = 0;  // all digits
+  int digits = 0;
+  int frac_digits = 0;
+  std::uint64_t frac = 0;      // fractional digits as an integer (first 18)
+  bool has_sep = false;
+  std::string slow;            // the digits, for numbers too long for the fast path
+  double value() const {
+    double v;
+    if (digits <= 15 && frac_digits <= 22) {
+      v = static_cast<double>(mantissa) / kPow10[frac_digits];
+    } else {
+      std::from_chars(slow.data(), slow.data() + slow.size(), v);
+    }
+    return negative ? -v : v;
+  }
+};
+
+// number = [sign] (digits [sep [digits]] | sep digits), blanks ignored in between.
+std::size_t read_number(std::string_view s, std::size_t i, Number& n) {
+  n = Number{};
+  auto skip = [&] {
+    while (i < s.size() && is_blank(s[i])) ++i;
+  };
+  skip();
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) {
+    n.negative = s[i] == '-';
+    n.has_sign = true;
+    ++i;
+    skip();
+  }
+  int any = 0;
+  for (;;) {
+    skip();
+    if (i >= s.size()) break;
+    const char c = s[i];
+    if (is_digit(c)) {
+      ++any;
+      if (n.digits < 19) n.mantissa = n.mantissa * 10 + static_cast<unsigned>(c - '0');
+      ++n.digits;
+      if (n.has_sep) {
+        if (n.frac_digits < 18) n.frac = n.frac * 10 + static_cast<unsigned>(c - '0');
+        ++n.frac_digits;
+      } else if (n.digits <= 19) {
+        n.int_part = n.mantissa;
+      }
+      n.slow.push_back(c);
+      ++i;
+    } else if ((c == '.' || c == ',') && !n.has_sep) {
+      n.has_sep = true;
+      n.slow.push_back('.');
+      ++i;
+    } else {
+      break;
+    }
+  }
+  n.ok = any > 0;
+  return i;
+}
+
+}  // namespace
+
+bool is_percent_line(std::string_view line) {
+  for (char c : line) {
+    if (is_blank(c)) continue;
+    return c == '%';
+  }
+  return false;
+}
+
+void lex_line(std::string_view s, std::size_t line_number, Block& out, Diagnostics& diag) {
+  out.line = line_number;
+  out.present = 0;
+  out.code_count = 0;
+  out.has_comment = false;
+  out.comment = {};
+  out.text = s;
+  Number n;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const char c = s[i];
+    if (is_blank(c) || c == '\r') {
+      ++i;
+      continue;
+    }
+    if (std::size_t len = comment_start_length(s, i)) {
+      out.has_comment = true;
+      out.comment_column = static_cast<std::uint32_t>(i + 1);
+      std::string_view text = s.substr(i + len);
+      if (c == '(') {
+        const std::size_t close = text.find(')');
+        if (close != std::string_view::npos && !trim(text.substr(close + 1)).empty())
+          diag.add(line_number, i + len + close + 2,
+                   "text after `)` is part of the comment (a `(` comment runs to the end of the line)");
+      }
+      text = trim(text);
+      if (!text.empty() && text.back() == ')') text = trim(text.substr(0, text.size() - 1));
+      out.comment = text;
+      break;
+    }
+    if (!is_letter(c)) {
+      const unsigned char u = static_cast<unsigned char>(c);
+      diag.add(line_number, i + 1,
+               u >= 0x80 || u < 0x20 ? fmt::format("stray byte 0x{:02X} skipped", u)
+                                     : fmt::format("stray character `{}` skipped", c));
+      ++i;
+      continue;
+    }
+    const char letter = static_cast<char>(c & ~0x20);
+    const std::size_t column = i + 1;
+    i = read_number(s, i + 1, n);
+    if (!n.ok) {
+      diag.add(line_number, column, fmt::format("letter `{}` without a number skipped", letter));
+      continue;
+    }
+    if (i < s.size() && (s[i] == '.' || s[i] == ',')) {  // a second separator: `X1.2.3`
+      while (i < s.size() && (is_digit(s[i]) || s[i] == '.' || s[i] == ',' || is_blank(s[i]))) ++i;
+      diag.add(line_number, column, fmt::format("malformed number after `{}`: word skipped", letter));
+      continue;
+    }
+    if (letter == 'N') continue;  // line numbers are ignored
+    if (letter == 'G' || letter == 'M') {
+      if (n.has_sign || !n.ok || n.digits > 9) {
+        diag.add(line_number, column, fmt::format("malformed {} code skipped", letter));
+        continue;
+      }
+      if (out.code_count == Block::kMaxCodes) {
+        diag.add(line_number, column, "too many G/M codes in one line: code skipped");
+        continue;
+      }
+      CodeWord& w = out.codes[out.code_count++];
+      w.letter = letter;
+      w.number = static_cast<int>(n.int_part);
+      std::uint64_t frac = n.frac;
+      int digits = n.frac_digits > 18 ? 18 : n.frac_digits;
+      while (digits > 0 && frac % 10 == 0) {
+        frac /= 10;
+        --digits;
+      }
+      w.dot = static_cast<int>(frac);
+      w.dot_digits = digits;
+      w.column = static_cast<std::uint32_t>(column);
+      continue;
+    }
+    const auto k = static_cast<std::size_t>(letter - 'A');
+    if (out.present & (1u << k))
+      diag.add(line_number, column, fmt::format("`{}` given twice in one line: the last one counts", letter));
+    out.present |= 1u << k;
+    out.value[k] = n.value();
+    out.column[k] = static_cast<std::uint32_t>(column);
+  }
+}
+
+}  // namespace pikocnc

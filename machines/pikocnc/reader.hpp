@@ -1,0 +1,42 @@
+// PikoCNC G-code read back into motion: a toolpath::CommandSource that interprets an NC program
+// (either dialect version) and yields the neutral stream commands it produces. See docs/pikocnc.md.
+#pragma once
+
+#include <cstddef>
+#include <istream>
+#include <memory>
+#include <string>
+
+#include "machines/pikocnc/diagnostics.hpp"
+#include "machines/pikocnc/options.hpp"
+#include "toolpath/error.hpp"
+#include "toolpath/source.hpp"
+
+namespace pikocnc {
+
+class Interpreter;
+
+class PikoReader final : public toolpath::CommandSource {
+public:
+  // Reads from `in`, which must outlive the reader; `file_name` is used in messages.
+  PikoReader(std::istream& in, std::string file_name, Options options = {});
+  ~PikoReader() override;
+  // Opens a file; throws toolpath::InputError when it cannot be read.
+  static std::unique_ptr<PikoReader> open(const std::string& path, Options options = {});
+
+  // Throws toolpath::InputError (file:line:column) on an error in the program.
+  bool next(toolpath::Command& out) override;
+
+  // The NC line that produced the command returned last (0 for @start_of_file and the end).
+  std::size_t line() const { return line_; }
+  // Warnings so far: ignored codes and words, interpretation fallbacks.
+  const Diagnostics& diagnostics() const;
+  const std::string& file_name() const;
+
+private:
+  std::unique_ptr<std::istream> owned_;
+  std::unique_ptr<Interpreter> interpreter_;
+  std::size_t line_ = 0;
+};
+
+}  // namespace pikocnc

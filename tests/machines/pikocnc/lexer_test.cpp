@@ -1,0 +1,97 @@
+// Section 1 of the dialect: comments, case, blanks, comma decimals, code numbers, malformed text.
+#include <gtest/gtest.h>
+#include <fmt/format.h>
+
+#include <string>
+
+#include "machines/pikocnc/codes.hpp"
+#include "machines/pikocnc/lexer.hpp"
+
+namespace {
+
+// The block as `G1 X45.5 | comment | warnings`, codes first, then words in letter order.
+std::string render(std::string_view line) {
+  pikocnc::Block b;
+  pikocnc::Diagnostics d;
+  pikocnc::lex_line(line, 7, b, d);
+  std::string out;
+  for (std::size_t i = 0; i < b.code_count; ++i) {
+    const auto& c = b.codes[i];
+    out += fmt::format("{}{}{}{} ", c.letter, c.number, c.dot_digits ? "." : "", c.dot_digits ? std::to_string(c.dot) : "");
+  }
+  for (char l = 'A'; l <= 'Z'; ++l)
+    if (b.has(l)) out += fmt::format("{}{} ", l, b.get(l));
+  if (!out.empty()) out.pop_back();
+  if (b.has_comment) out += fmt::format(" |{}|", b.comment);
+  for (const auto& x : d.kept()) out += fmt::format(" [{}:{} {}]", x.line, x.column, x.message);
+  return out;
+}
+
+TEST(PikoLexer, Table) {
+  struct Case {
+    const char* line;
+    const char* expected;
+  } cases[] = {
+      {"G1 X45.5 Y30.2", "G1 X45.5 Y30.2"},
+      {"G01 x45,5 Y 30,2", "G1 X45.5 Y30.2"},
+      {"g1x45.5y30.2", "G1 X45.5 Y30.2"},
+      {"G0 Z2.", "G0 Z2"},
+      {"X-.5", "X-0.5"},
+      {"X+3", "X3"},
+      {"X1 2", "X12"},
+      {"N10 G0 X1", "G0 X1"},
+      {"N160 G0 Z2 ; lift", "G0 Z2 |lift|"},
+      {"G1 X20.6 Y36 ( koniec", "G1 X20.6 Y36 |koniec|"},
+      {"( Frez 2mm", " |Frez 2mm|"},
+      {"' Frez 2mm", " |Frez 2mm|"},
+      {"; Frez 2mm", " |Frez 2mm|"},
+      {"G125 // koniec pierwszej petli", "G125 |koniec pierwszej petli|"},
+      {"G1 X1 \xE2\x80\x99 typographic", "G1 X1 |typographic|"},
+      {"G120 (Tekst na ekranie)", "G120 |Tekst na ekranie|"},
+      {"G0 X1 (approach) Y2", "G0 X1 |approach) Y2| [7:17 text after `)` is part of the comment (a `(` comment runs to the end of the line)]"},
+      {"G68.2 P1 Q123 I90 Z-60", "G68.2 I90 P1 Q123 Z-60"},
+      {"G105.10 P1", "G105.1 P1"},
+      {"G1.0 X1", "G1 X1"},
+      {"G0.1 X10", "G0.1 X10"},
+      {"M6T5", "M6 T5"},
+      {"M03 S1000", "M3 S1000"},
+      {"G1 X1.2.3 Y1", "G1 Y1 [7:4 malformed number after `X`: word skipped]"},
+      {"G1 =X5", "G1 X5 [7:4 stray character `=` skipped]"},
+      {"G1 X Y2", "G1 Y2 [7:4 letter `X` without a number skipped]"},
+      {"G1 X1 X2", "G1 X2 [7:7 `X` given twice in one line: the last one counts]"},
+      {"#1=5", " [7:1 stray character `#` skipped] [7:2 stray character `1` skipped] [7:3 stray character `=` skipped] [7:4 stray character `5` skipped]"},
+      {"G1 X1\r", "G1 X1"},
+      {"", ""},
+  };
+  for (const auto& c : cases) EXPECT_EQ(render(c.line), c.expected) << c.line;
+}
+
+TEST(PikoLexer, PercentLine) {
+  EXPECT_TRUE(pikocnc::is_percent_line("%"));
+  EXPECT_TRUE(pikocnc::is_percent_line("  % ; program start"));
+  EXPECT_FALSE(pikocnc::is_percent_line("G0 %"));
+  EXPECT_FALSE(pikocnc::is_percent_line(""));
+}
+
+TEST(PikoCodes, DialectsKnowTheirCodes) {
+  using pikocnc::Dialect;
+  auto known = [](char letter, int number, int dot, int digits, Dialect d) {
+    pikocnc::CodeWord w{letter, number, dot, digits, 1};
+    return pikocnc::find_code(w, d) != nullptr;
+  };
+  EXPECT_TRUE(known('G', 81, 0, 0, Dialect::V2016));
+  EXPECT_FALSE(known('G', 17, 0, 0, Dialect::V2016));  // planes are 2025 only
+  EXPECT_FALSE(known('G', 0, 1, 1, Dialect::V2016));
+  EXPECT_TRUE(known('G', 0, 1, 1, Dialect::V2025));
+  EXPECT_TRUE(known('G', 110, 0, 0, Dialect::V2016));
+  EXPECT_FALSE(known('G', 111, 0, 0, Dialect::V2016));
+  EXPECT_TRUE(known('G', 114, 7, 1, Dialect::V2025));
+  EXPECT_FALSE(known('G', 115, 1, 1, Dialect::V2025));
+  EXPECT_TRUE(known('G', 234, 12, 2, Dialect::V2025));
+  EXPECT_FALSE(known('M', 1, 0, 0, Dialect::V2016));
+  EXPECT_TRUE(known('M', 99, 0, 0, Dialect::V2016));
+  EXPECT_FALSE(known('M', 2, 0, 0, Dialect::V2025));  // M2 is not documented
+  EXPECT_FALSE(known('G', 82, 0, 0, Dialect::V2025));
+}
+
+}  // namespace
