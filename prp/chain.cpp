@@ -1,23 +1,46 @@
-// The stream filters, wired in the order of spec 3.0.
+// The stream filters, wired in the order of spec 3.0: structure (checks, drill expansion, default
+// positions), then geometry (short lines, arcs, zero snapping and precision).
+#include <vector>
+
+#include "prp/arc_filter.hpp"
+#include "prp/drill_expansion.hpp"
+#include "prp/precision_filter.hpp"
 #include "prp/prp.hpp"
+#include "prp/short_line_filter.hpp"
+#include "prp/structure_check.hpp"
 
 namespace prp {
 namespace {
 
-// Hands the input through unchanged (the chain when no filter applies).
-class PassThrough final : public toolpath::CommandSource {
+// Owns the filters; pulls from the last one.
+class Chain final : public toolpath::CommandSource {
 public:
-  explicit PassThrough(toolpath::CommandSource& input) : input_(input) {}
-  bool next(toolpath::Command& out) override { return input_.next(out); }
+  explicit Chain(toolpath::CommandSource& input) : last_(&input) {}
+  template <class Filter, class... Args>
+  void add(Args&&... args) {
+    auto filter = std::make_unique<Filter>(*last_, std::forward<Args>(args)...);
+    last_ = filter.get();
+    filters_.push_back(std::move(filter));
+  }
+  bool next(toolpath::Command& out) override { return last_->next(out); }
 
 private:
-  toolpath::CommandSource& input_;
+  toolpath::CommandSource* last_;
+  std::vector<std::unique_ptr<toolpath::CommandSource>> filters_;
 };
 
 }  // namespace
 
-std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParameters&, toolpath::CommandSource& input) {
-  return std::make_unique<PassThrough>(input);
+std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParameters& params,
+                                                            toolpath::CommandSource& input, WarningSink warn) {
+  auto chain = std::make_unique<Chain>(input);
+  chain->add<StructureCheck>(params, warn);
+  if (DrillExpansion::needed(params)) chain->add<DrillExpansion>(params, warn);
+  if (params.has("dflt_start") || params.has("dflt_end")) chain->add<DefaultPositions>(params);
+  if (params.numeric("eps_line") > 0) chain->add<ShortLineFilter>(params.numeric("eps_line"));
+  if (auto arcs = ArcSettings::from(params); !arcs.passes_everything()) chain->add<ArcFilter>(arcs, warn);
+  if (auto precision = PrecisionSettings::from(params); !precision.does_nothing()) chain->add<PrecisionFilter>(precision);
+  return chain;
 }
 
 }  // namespace prp

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -197,9 +198,31 @@ struct NumberRange {
 NumberRange program_numbers(const MachineParameters& params);
 NumberRange procedure_numbers(const MachineParameters& params);
 
+// A command the filters cannot process as the PRP asks (a drill cycle that cannot be expanded, a
+// malformed @arc, a label beyond proc_num_max). what(): "command N (@name): message", N being the
+// command's position in the input stream; the engine adds the toolpath file name.
+class StreamError : public std::runtime_error {
+public:
+  StreamError(const toolpath::Command& command, const std::string& message);
+  std::size_t command_index() const { return index_; }
+  const std::string& command_name() const { return name_; }
+  const std::string& message() const { return message_; }
+
+private:
+  std::size_t index_;
+  std::string name_;
+  std::string message_;
+};
+
+// Receives the filters' warnings (a stream that does not match the PRP, see docs/prp.md).
+using WarningSink = std::function<void(const toolpath::Command& command, const std::string& message)>;
+
 // Wires the stream filters the parameters call for, in the order of spec 3.0, around `input`
-// (which must outlive the chain). Filters whose parameters ask for nothing are left out.
+// (which must outlive the chain). Filters whose parameters ask for nothing are left out. The
+// parameters must outlive the chain too. Filters throw StreamError; warnings go to `warn` (dropped
+// when empty).
 std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParameters& params,
-                                                            toolpath::CommandSource& input);
+                                                            toolpath::CommandSource& input,
+                                                            WarningSink warn = {});
 
 }  // namespace prp

@@ -1,0 +1,160 @@
+#include "prp/arc_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+namespace prp {
+
+using toolpath::geometry::Arc;
+using toolpath::geometry::Direction;
+using toolpath::geometry::Plane;
+
+ArcSettings ArcSettings::from(const MachineParameters& p) {
+  ArcSettings s;
+  s.arc_exist = p.logical("arc_exist");
+  s.arc_3d = p.logical("arc_3d");
+  s.quadrants = p.logical("arc_quadrants");
+  s.gt_180 = p.logical("arc_gt_180");
+  s.zx_yz = p.logical("arc_zx_yz");
+  s.machine_plane = toolpath::geometry::parse_plane(p.text("machine_plane")).value_or(Plane::XY);
+  if (p.has("arc_max_radius")) s.max_radius = p.numeric("arc_max_radius");
+  s.max_angle = p.numeric("arc_max_angle");
+  s.max_chord = p.numeric("arc_max_chord");
+  s.min_length = p.numeric("arc_min_length");
+  s.eps_angle = p.numeric("eps_angle");
+  s.zero_value = p.numeric("zero_value");
+  s.limits_defaulted = !p.has("arc_max_angle") && !p.has("arc_max_chord");
+  return s;
+}
+
+bool ArcSettings::passes_everything() const {
+  return arc_exist && arc_3d && !quadrants && gt_180 && zx_yz && !max_radius && min_length <= 0 && eps_angle <= 0;
+}
+
+ArcFilter::ArcFilter(toolpath::CommandSource& input, ArcSettings settings, WarningSink warn)
+    : input_(input), settings_(settings), warn_(std::move(warn)) {}
+
+bool ArcFilter::next(toolpath::Command& out) {
+  if (piece_ < pieces_) {
+    emit(out);
+    return true;
+  }
+  if (!input_.next(out)) return false;
+  if (out.is_stream_command() && is(out, "@arc")) {
+    plan(out);
+    if (pieces_ > 0) {
+      std::swap(original_, out);
+      emit(out);
+      return true;
+    }
+  }
+  position_.update(out);
+  return true;
+}
+
+// Decides what replaces the arc (spec 3.2 process_arc); pieces_ stays 0 when it passes unchanged.
+void ArcFilter::plan(const toolpath::Command& c) {
+  piece_ = pieces_ = chords_ = 0;
+  cuts_.clear();
+
+  Plane plane = Plane::XY;
+  if (const toolpath::Value* v = c.find("arc_plane")) {
+    auto p = toolpath::geometry::parse_plane(v->text);
+    if (!p) throw StreamError(c, fmt::format("arc_plane `{}` is none of XY, YZ, ZX", v->text));
+    plane = *p;
+  }
+  const toolpath::Value* dir = c.find("arc_direction");
+  if (!dir || !(toolpath::iequals(dir->text, "CW") || toolpath::iequals(dir->text, "CCW")))
+    throw StreamError(c, "expected arc_direction CW or CCW");
+  const Direction direction = toolpath::iequals(dir->text, "CW") ? Direction::CW : Direction::CCW;
+  const auto a = toolpath::geometry::axes(plane);
+
+  // End point: missing coordinates stay where the tool is.
+  static constexpr std::string_view pos_names[] = {"xpos", "ypos", "zpos"};
+  Eigen::Vector3d end;
+  for (int i = 0; i < 3; ++i) {
+    auto v = number(c, pos_names[i]);
+    if (!v) v = position_.axis(i);
+    if (!v) throw StreamError(c, fmt::format("the arc has no {} and the tool position is unknown", pos_names[i]));
+    end[i] = *v;
+  }
+  // Centre and start in the arc plane: xcenter/ycenter and the *_rel values are the plane's first
+  // and second coordinates (XY: x y, YZ: y z, ZX: z x).
+  auto cx = number(c, "xcenter"), cy = number(c, "ycenter");
+  auto rx = number(c, "xcenter_rel"), ry = number(c, "ycenter_rel");
+  Eigen::Vector3d start, centre;
+  for (int k = 0; k < 2; ++k) {
+    const int axis = k == 0 ? a.first : a.second;
+    auto cen = k == 0 ? cx : cy;
+    auto rel = k == 0 ? rx : ry;
+    auto here = position_.axis(axis);
+    if (!cen && rel && here) cen = *here + *rel;
+    if (!cen) throw StreamError(c, "the arc has no centre (xcenter/ycenter, or xcenter_rel/ycenter_rel)");
+    centre[axis] = *cen;
+    start[axis] = rel ? *cen - *rel : here.value_or(*cen);
+    if (!rel && !here) throw StreamError(c, "the arc's start is unknown (no xcenter_rel/ycenter_rel)");
+  }
+  auto zstart = plane == Plane::XY ? number(c, "zstart") : std::nullopt;
+  start[a.normal] = zstart ? *zstart : position_.axis(a.normal).value_or(end[a.normal]);
+  centre[a.normal] = start[a.normal];
+
+  arc_ = toolpath::geometry::make_arc(start, end, centre, plane, direction, number(c, "arc_size"));
+  const ArcSettings& s = settings_;
+  const bool helical = std::abs(arc_.rise()) > std::max(s.zero_value, 1e-9);
+  const bool in_machine_plane = plane == s.machine_plane;
+
+  if (arc_.sweep < s.eps_angle || arc_.length() < s.min_length) {
+    chords_ = pieces_ = 1;  // one straight line to the end
+    return;
+  }
+  if (!s.arc_exist || (helical && !s.arc_3d) || (!in_machine_plane && !s.zx_yz) ||
+      (s.max_radius && arc_.radius > *s.max_radius)) {
+    chords_ = pieces_ = toolpath::geometry::chord_count(arc_, s.max_angle, s.max_chord);
+    if (settings_.limits_defaulted && warn_) {
+      warn_(c, "arcs are linearised but the PRP sets neither arc_max_angle nor arc_max_chord: using 10 degrees "
+               "and 30 mm / 1.1811 inch");
+      settings_.limits_defaulted = false;  // once
+    }
+    return;
+  }
+  std::vector<double> inner;
+  // A cut that would leave a piece below eps_angle, or shorter than zero_value, is not made: that
+  // sliver is rounding in the toolpath (an arc starting at 180.002 degrees), not a real crossing.
+  const double sliver = std::max({1e-6, s.eps_angle, s.zero_value / arc_.radius * 180.0 / std::numbers::pi});
+  if (s.quadrants) inner = toolpath::geometry::quadrant_crossings(arc_, sliver);
+  else if (!s.gt_180 && arc_.sweep > 180.0 + 1e-9) inner = {arc_.sweep / 2.0};
+  if (inner.empty()) return;  // the arc passes unchanged
+  cuts_.push_back(0.0);
+  cuts_.insert(cuts_.end(), inner.begin(), inner.end());
+  cuts_.push_back(arc_.sweep);
+  pieces_ = static_cast<int>(cuts_.size()) - 1;
+}
+
+void ArcFilter::emit(toolpath::Command& out) {
+  const int i = piece_++;
+  const bool last = piece_ == pieces_;
+  const Arc piece = chords_ > 0 ? arc_.piece(arc_.sweep * i / chords_, last ? arc_.sweep : arc_.sweep * (i + 1) / chords_)
+                                : arc_.piece(cuts_[static_cast<std::size_t>(i)], cuts_[static_cast<std::size_t>(i) + 1]);
+  const bool as_line = chords_ > 0 || piece.sweep < settings_.eps_angle || piece.length() < settings_.min_length;
+  if (as_line) {
+    make_motion(out, "@line", original_, piece.end, number(original_, "feed"));
+  } else {
+    out = original_;
+    out.trace.clear();
+    const auto a = toolpath::geometry::axes(piece.plane);
+    set_point(out, piece.end);
+    set_number(out, "xcenter_rel", piece.centre[a.first] - piece.start[a.first]);
+    set_number(out, "ycenter_rel", piece.centre[a.second] - piece.start[a.second]);
+    set_number(out, "start_angle", piece.start_angle());
+    set_number(out, "end_angle", piece.end_angle());
+    set_number(out, "arc_size", piece.sweep);
+    if (out.find("zstart")) set_number(out, "zstart", piece.start.z());
+  }
+  if (last) out.trace = original_.trace;  // the original post's output belongs to the whole arc
+  position_.update(out);
+}
+
+}  // namespace prp

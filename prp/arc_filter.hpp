@@ -1,0 +1,55 @@
+// Arc admission, linearisation and splitting (spec 3.2-3.4): each @arc the machine cannot take is
+// replaced by chords or by smaller arcs, every piece with all its arc values recomputed.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "prp/motion.hpp"
+#include "prp/prp.hpp"
+#include "toolpath/geometry.hpp"
+
+namespace prp {
+
+struct ArcSettings {
+  bool arc_exist = true;      // N: every arc becomes chords
+  bool arc_3d = true;         // N: helical arcs become chords
+  bool quadrants = false;     // Y: cut at every multiple of 90 degrees
+  bool gt_180 = true;         // N: arcs over 180 degrees are halved
+  bool zx_yz = true;          // N: arcs outside the machine plane become chords
+  toolpath::geometry::Plane machine_plane = toolpath::geometry::Plane::XY;
+  std::optional<double> max_radius;  // larger arcs become chords
+  double max_angle = 10.0;    // chord limits when linearising
+  double max_chord = 30.0;
+  double min_length = 0.0;    // shorter arcs (or pieces) become one line
+  double eps_angle = 0.0;     // smaller sweeps become one line
+  double zero_value = 0.0;    // a rise below this is not helical
+  bool limits_defaulted = false;  // neither arc_max_angle nor arc_max_chord is in the PRP
+
+  static ArcSettings from(const MachineParameters& params);
+  // True when no arc can be changed (every switch passes arcs through).
+  bool passes_everything() const;
+};
+
+class ArcFilter final : public toolpath::CommandSource {
+public:
+  ArcFilter(toolpath::CommandSource& input, ArcSettings settings, WarningSink warn = {});
+  bool next(toolpath::Command& out) override;
+
+private:
+  void plan(const toolpath::Command& arc);
+  void emit(toolpath::Command& out);
+
+  toolpath::CommandSource& input_;
+  ArcSettings settings_;
+  WarningSink warn_;
+  ToolPosition position_;
+  toolpath::Command original_;  // the arc being replaced
+  toolpath::geometry::Arc arc_;
+  std::vector<double> cuts_;    // piece boundaries as offsets from the start, 0 .. sweep
+  int chords_ = 0;              // > 0: linearising into this many chords
+  int piece_ = 0;               // next piece to emit
+  int pieces_ = 0;              // 0: nothing pending
+};
+
+}  // namespace prp

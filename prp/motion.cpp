@@ -1,0 +1,72 @@
+#include "prp/motion.hpp"
+
+#include "prp/prp.hpp"
+
+#include <fmt/format.h>
+
+namespace prp {
+
+StreamError::StreamError(const toolpath::Command& command, const std::string& message)
+    : std::runtime_error(fmt::format("command {} ({}): {}", command.index, command.name, message)),
+      index_(command.index),
+      name_(command.name),
+      message_(message) {}
+
+bool is(const toolpath::Command& c, std::string_view name) { return toolpath::iequals(c.name, name); }
+
+bool moves_tool(const toolpath::Command& c) {
+  if (!c.is_stream_command()) return false;
+  for (std::string_view n : {"@rapid_move", "@line", "@arc", "@line_on", "@move_5x", "@line_5x", "@arc_5x",
+                             "@start_program", "@end_program"})
+    if (is(c, n)) return true;
+  return false;
+}
+
+bool is_feed_motion(const toolpath::Command& c) {
+  return c.is_stream_command() && (is(c, "@line") || is(c, "@arc") || is(c, "@line_on") || is(c, "@line_5x") ||
+                                   is(c, "@arc_5x"));
+}
+
+std::optional<double> number(const toolpath::Command& c, std::string_view name) {
+  const toolpath::Value* v = c.find(name);
+  if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return std::nullopt;
+  return v->as_number();
+}
+
+void set_number(toolpath::Command& c, std::string_view name, double v) {
+  // Keep an explicit change flag written in the trace.
+  const toolpath::Value* old = c.find(name);
+  c.set(name, toolpath::Value::make_numeric(v, old ? old->flag : toolpath::ChangeFlag::None));
+}
+
+void set_point(toolpath::Command& c, const Eigen::Vector3d& p) {
+  set_number(c, "xpos", p.x());
+  set_number(c, "ypos", p.y());
+  set_number(c, "zpos", p.z());
+}
+
+void ToolPosition::update(const toolpath::Command& c) {
+  if (!moves_tool(c)) return;
+  static constexpr std::string_view names[] = {"xpos", "ypos", "zpos"};
+  for (std::size_t i = 0; i < 3; ++i)
+    if (auto v = number(c, names[i])) axes_[i] = *v;
+}
+
+std::optional<Eigen::Vector3d> ToolPosition::point() const {
+  if (!axes_[0] || !axes_[1] || !axes_[2]) return std::nullopt;
+  return Eigen::Vector3d(*axes_[0], *axes_[1], *axes_[2]);
+}
+
+void make_motion(toolpath::Command& out, std::string_view name, const toolpath::Command& from,
+                 const Eigen::Vector3d& p, std::optional<double> feed) {
+  out.clear();
+  out.name = std::string(name);
+  out.index = from.index;
+  out.depth = from.depth;
+  out.parameters.push_back({"xpos", toolpath::Value::make_numeric(p.x())});
+  out.parameters.push_back({"ypos", toolpath::Value::make_numeric(p.y())});
+  out.parameters.push_back({"zpos", toolpath::Value::make_numeric(p.z())});
+  if (feed) out.parameters.push_back({"feed", toolpath::Value::make_numeric(*feed)});
+}
+
+}  // namespace prp

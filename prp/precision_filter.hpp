@@ -1,0 +1,36 @@
+// Zero snapping and precision rounding (spec 3.1), the last geometric stage: a coordinate closer
+// than `zero_value` to 0 becomes 0; an axis that moves less than `zero_value` keeps its previous
+// value; coordinates, feeds and spindle speeds are rounded to the PRP's digits.
+#pragma once
+
+#include <optional>
+
+#include "prp/motion.hpp"
+#include "prp/prp.hpp"
+
+namespace prp {
+
+struct PrecisionSettings {
+  double zero_value = 0.0;
+  std::optional<int> movement_digits, feed_digits, spin_digits;
+
+  static PrecisionSettings from(const MachineParameters& params);
+  bool does_nothing() const { return zero_value <= 0 && !movement_digits && !feed_digits && !spin_digits; }
+};
+
+// movement_precision as written (spec 3.1): a whole number >= 1 is a digit count, 0 < v < 1 a step
+// (0.001: 3 digits), 0 no rounding.
+std::optional<int> digits_of(double movement_precision);
+
+class PrecisionFilter final : public toolpath::CommandSource {
+public:
+  PrecisionFilter(toolpath::CommandSource& input, PrecisionSettings settings) : input_(input), s_(settings) {}
+  bool next(toolpath::Command& out) override;
+
+private:
+  toolpath::CommandSource& input_;
+  PrecisionSettings s_;
+  ToolPosition sent_;
+};
+
+}  // namespace prp

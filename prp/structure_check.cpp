@@ -1,0 +1,77 @@
+#include "prp/structure_check.hpp"
+
+#include <fmt/format.h>
+
+#include "prp/motion.hpp"
+
+namespace prp {
+
+StructureCheck::StructureCheck(toolpath::CommandSource& input, const MachineParameters& p, WarningSink warn)
+    : input_(input),
+      warn_(std::move(warn)),
+      gen_procs_(p.text("gen_procs")),
+      loop_exist_(p.logical("loop_exist")),
+      rotate_(p.logical("rotate")),
+      mirror_(p.logical("mirror")),
+      software_transform_(p.logical("software_transform")),
+      comp_exist_(p.logical("comp_exist")),
+      programs_(program_numbers(p)),
+      procedures_(procedure_numbers(p)) {
+  if (p.has("num_homes")) num_homes_ = p.integer("num_homes");
+}
+
+bool StructureCheck::next(toolpath::Command& out) {
+  if (!input_.next(out)) return false;
+  if (out.is_stream_command()) check(out);
+  return true;
+}
+
+void StructureCheck::check(const toolpath::Command& c) {
+  // Each kind of mismatch is reported once, at its first command: a trace repeats them.
+  auto warn = [&](const std::string& message) {
+    if (warn_ && warned_.insert(c.name).second) warn_(c, message);
+  };
+  const bool procs_off = toolpath::iequals(gen_procs_, "N");
+  if (is(c, "@call_proc") && procs_off) warn("@call_proc although the PRP says gen_procs = N");
+  if (is(c, "@call_prms") && !toolpath::iequals(gen_procs_, "D"))
+    warn(fmt::format("@call_prms although the PRP says gen_procs = {} (only D calls with parameters)", gen_procs_));
+  if (is(c, "@loop") && !loop_exist_) warn("@loop although the PRP says loop_exist = N");
+  if (is(c, "@rotate") && !rotate_) warn("@rotate although the PRP says rotate = N");
+  if (is(c, "@mirror") && !mirror_) warn("@mirror although the PRP says mirror = N");
+  if (software_transform_ && (is(c, "@loop") || is(c, "@rotate") || is(c, "@mirror") || is(c, "@change_ref_point")))
+    warn(fmt::format("{} although the PRP says software_transform = Y", c.name));
+
+  if (is(c, "@compensation") && !comp_exist_) {
+    if (const toolpath::Value* side = c.find("side"); side && !toolpath::iequals(side->text, "COMP_OFF"))
+      throw StreamError(c, fmt::format("compensation {} on a machine without it (comp_exist = N)", side->text));
+  }
+  if (is(c, "@proc") || is(c, "@call_proc") || is(c, "@call_prms")) {
+    if (auto label = number(c, "label"); label && !procedures_.contains(static_cast<std::int64_t>(*label)))
+      throw StreamError(c, fmt::format("procedure label {} is outside proc_num_min .. proc_num_max ({} .. {})",
+                                       *label, procedures_.min.value_or(0), procedures_.max.value_or(0)));
+  }
+  if (is(c, "@start_of_file")) {
+    if (auto n = number(c, "program_number"); n && !programs_.contains(static_cast<std::int64_t>(*n)))
+      throw StreamError(c, fmt::format("program number {} is outside prog_num_min .. prog_num_max ({} .. {})", *n,
+                                       programs_.min.value_or(0), programs_.max.value_or(0)));
+  }
+  if (is(c, "@home_number") && num_homes_) {
+    if (auto h = number(c, "home_number"); h && *h > static_cast<double>(*num_homes_))
+      warn(fmt::format("home_number {} is above num_homes {}", *h, *num_homes_));
+  }
+}
+
+DefaultPositions::DefaultPositions(toolpath::CommandSource& input, const MachineParameters& p) : input_(input) {
+  if (p.has("dflt_start")) start_ = p.point("dflt_start");
+  if (p.has("dflt_end")) end_ = p.point("dflt_end");
+}
+
+bool DefaultPositions::next(toolpath::Command& out) {
+  if (!input_.next(out)) return false;
+  if (!out.is_stream_command() || out.find("xpos") || out.find("ypos") || out.find("zpos")) return true;
+  if (start_ && is(out, "@start_program")) set_point(out, *start_);
+  if (end_ && is(out, "@end_program")) set_point(out, *end_);
+  return true;
+}
+
+}  // namespace prp
