@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -127,6 +128,9 @@ public:
   // Host assignment: converts to the variable's type, sets `change` (or forces it) and active=TRUE.
   // Throws Error on an impossible conversion.
   void assign(VariableId id, const Value& value, ChangeOverride change = ChangeOverride::Compute);
+  // Host assignment to one element of a host array (chng_cond<<3,n>>); indices are 1-based.
+  void assign_element(VariableId id, std::span<const int> indices, const Value& value,
+                      ChangeOverride change = ChangeOverride::Compute);
   void set_active(VariableId id, bool active);
   void set_changed(VariableId id, bool changed);
   const Value& value(VariableId id) const;
@@ -142,6 +146,8 @@ public:
 
   // Trace output (`trace "list":level` statements) goes here; nullptr (default) discards it.
   void set_trace_stream(std::ostream* trace);
+  // A toolpath command the post has no procedure for: traced at nesting level 0 (spec 8.2).
+  void trace_unhandled(std::string_view command);
   // Limits that stop a runaway post: loop iterations per P-code and call depth (error 405).
   void set_limits(std::uint64_t max_loop_iterations, int max_call_depth);
 

@@ -1,0 +1,146 @@
+// The public API: compile entry points and the Interpreter facade over Interpreter::State.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "gppl/compiler.hpp"
+#include "gppl/machine.hpp"
+
+namespace gppl {
+
+namespace {
+
+constexpr int kMaxCallDepthLimit = 1000;  // deeper would risk the native stack
+
+}  // namespace
+
+std::shared_ptr<const Program> compile_file(const std::string& path, const CompileOptions& options) {
+  return Compiler(options).compile_file(path);
+}
+
+std::shared_ptr<const Program> compile_source(std::string_view text, const std::string& file_name,
+                                              const CompileOptions& options) {
+  return Compiler(options).compile_source(text, file_name);
+}
+
+const std::vector<std::string>& warnings(const Program& program) { return program.warnings; }
+
+Interpreter::Interpreter(std::shared_ptr<const Program> program, OutputSink& sink) {
+  if (!program) throw std::invalid_argument("gppl::Interpreter needs a compiled program");
+  state_ = std::make_unique<State>(std::move(program), sink);
+}
+
+Interpreter::~Interpreter() = default;
+
+std::optional<VariableId> Interpreter::find_variable(std::string_view name) const {
+  const auto& index = state_->program.global_index;
+  const auto it = index.find(lower(name));
+  if (it == index.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<ProcedureId> Interpreter::find_procedure(std::string_view name) const {
+  std::string key = lower(name);
+  if (key.empty() || key.front() != '@') key.insert(key.begin(), '@');
+  const auto& index = state_->program.procedure_index;
+  const auto it = index.find(key);
+  if (it == index.end()) return std::nullopt;
+  return it->second;
+}
+
+void Interpreter::assign(VariableId id, const Value& value, ChangeOverride change) {
+  State& s = *state_;
+  const GlobalVariable& var = s.program.globals.at(id);
+  Cell& c = s.globals[var.first_cell];
+  const VarRef ref{false, id, var.first_cell, kNone, 0};
+  s.current = nullptr;
+  if (var.group == Group::Implicit && c.typed && c.value.type != value.type) c.typed = false;  // re-typed by the host
+  s.assign(c, value, change, &ref);
+  if (s.trace != nullptr && s.host_assigned.size() < 10000) s.host_assigned.push_back(id);
+}
+
+void Interpreter::assign_element(VariableId id, std::span<const int> indices, const Value& value, ChangeOverride change) {
+  State& s = *state_;
+  const GlobalVariable& var = s.program.globals.at(id);
+  if (indices.size() != var.dimensions.size())
+    throw std::out_of_range(fmt::format("{} has {} dimension(s), {} indices given", var.name, var.dimensions.size(),
+                                        indices.size()));
+  std::uint32_t offset = 0;
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    if (indices[i] < 1 || indices[i] > var.dimensions[i])
+      throw std::out_of_range(fmt::format("index {} of {} is {}, outside 1..{}", i + 1, var.name, indices[i],
+                                          var.dimensions[i]));
+    offset = offset * std::uint32_t(var.dimensions[i]) + std::uint32_t(indices[i] - 1);
+  }
+  const VarRef ref{false, id, var.first_cell, kNone, 0};
+  s.current = nullptr;
+  s.assign(s.globals[var.first_cell + offset], value, change, &ref);
+}
+
+void Interpreter::set_active(VariableId id, bool active) {
+  state_->globals[state_->program.globals.at(id).first_cell].active = active;
+}
+
+void Interpreter::set_changed(VariableId id, bool changed) {
+  state_->globals[state_->program.globals.at(id).first_cell].changed = changed;
+}
+
+const Value& Interpreter::value(VariableId id) const {
+  return state_->globals[state_->program.globals.at(id).first_cell].value;
+}
+
+bool Interpreter::active(VariableId id) const { return state_->globals[state_->program.globals.at(id).first_cell].active; }
+
+bool Interpreter::changed(VariableId id) const {
+  return state_->globals[state_->program.globals.at(id).first_cell].changed;
+}
+
+RunResult Interpreter::start() {
+  State& s = *state_;
+  struct InitGuard {
+    State& s;
+    ~InitGuard() { s.in_init = false; }
+  } guard{s};
+  s.in_init = true;  // @init_post is never traced (8.1); exit ends only the init procedure (5.9)
+  if (s.program.init_post && s.top_level(*s.program.init_post) == RunResult::Abort) return RunResult::Abort;
+  s.in_init = false;
+  for (std::uint32_t id : s.program.init_inc)
+    if (s.top_level(id) == RunResult::Abort) return RunResult::Abort;
+  return RunResult::Normal;
+}
+
+RunResult Interpreter::call(ProcedureId id) {
+  State& s = *state_;
+  if (id >= s.program.procedures.size() || !s.program.procedures[id].defined)
+    throw std::out_of_range(fmt::format("no procedure with id {}", id));
+  return s.top_level(id);
+}
+
+void Interpreter::finish() {
+  state_->current = nullptr;
+  state_->flush();
+}
+
+void Interpreter::set_trace_stream(std::ostream* trace) { state_->trace = trace; }
+
+void Interpreter::trace_unhandled(std::string_view command) {
+  State& s = *state_;
+  if (s.trace == nullptr) return;
+  std::string key = lower(command);
+  if (key.empty() || key.front() != '@') key.insert(key.begin(), '@');
+  const auto it = s.command_trace_level.find(key);
+  const int level = it != s.command_trace_level.end() ? it->second : s.default_trace_level;
+  if (level >= 1) {
+    s.frames.clear();
+    s.trace_enter(key, 0, level >= 3);
+  }
+  s.host_assigned.clear();
+}
+
+void Interpreter::set_limits(std::uint64_t max_loop_iterations, int max_call_depth) {
+  state_->max_loop_iterations = std::max<std::uint64_t>(max_loop_iterations, 1);
+  state_->max_call_depth = std::clamp(max_call_depth, 1, kMaxCallDepthLimit);
+}
+
+}  // namespace gppl

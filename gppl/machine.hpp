@@ -1,0 +1,123 @@
+// The interpreter's run-time state (Interpreter::State): variable cells, the call stack, the
+// expression scratch stack, the output line and the trace. Internal to gppl/.
+#pragma once
+
+#include <deque>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "gppl/display_format.hpp"
+#include "gppl/error_codes.hpp"
+#include "gppl/gppl.hpp"
+#include "gppl/program.hpp"
+
+namespace gppl {
+
+// One variable or array element with its attributes (3.5).
+struct Cell {
+  Value value;
+  bool changed = false;
+  bool active = true;
+  bool assigned = false;  // assigned at least once since declaration or procedure entry
+  bool typed = true;      // false: implicit host variable not yet typed by an assignment
+};
+
+enum class Flow : std::uint8_t { Normal, Exit, Abort };
+
+struct FormatCache {
+  std::string spec;
+  std::optional<DisplayFormat> format;
+};
+
+struct Interpreter::State {
+  State(std::shared_ptr<const Program> p, OutputSink& s);
+
+  std::shared_ptr<const Program> owner;
+  const Program& program;
+  OutputSink& sink;
+
+  std::vector<Cell> globals;
+  std::vector<Cell> stack;  // locals of all active procedures
+  std::uint32_t stack_top = 0;
+  struct Frame {
+    std::uint32_t procedure;
+    std::uint32_t base;
+  };
+  std::vector<Frame> frames;
+  std::deque<Value> scratch;  // expression temporaries; deque: references stay valid while it grows
+  std::uint32_t scratch_top = 0;
+  std::vector<Value> arguments;  // contiguous argument lists of built-in calls
+  std::uint32_t argument_top = 0;
+
+  std::uint64_t max_loop_iterations = 10'000'000;
+  std::uint64_t loop_iterations = 0;
+  int max_call_depth = 200;
+  const Instruction* current = nullptr;  // statement being executed (errors, line origins)
+  bool in_init = false;
+
+  // output line model (6.2)
+  std::string line;
+  bool line_open = false;
+  bool separator_pending = false;
+  LineOrigin origin;
+  std::string piece;
+  std::vector<FormatCache> format_sites;      // per generate item, then 3 defaults (integer, numeric, blknum)
+  std::vector<FormatCache> constant_formats;  // per Program::format_specs entry
+
+  // trace (8)
+  std::ostream* trace = nullptr;
+  int default_trace_level = 0;
+  std::vector<int> procedure_trace_level;  // -1: use the default
+  std::unordered_map<std::string, int> command_trace_level;  // names without a procedure
+  std::vector<std::uint32_t> host_assigned;  // variables the host set since the last call (trace dump)
+  std::string trace_remainder;               // a long procedure name's tail, printed on the next line
+
+  // machine.cpp: cells, conversions, assignment
+  [[noreturn]] void fail(ErrorCode code, std::string_view name = {}, std::string_view detail = {}) const;
+  [[noreturn]] void fail_at(SourcePos pos, ErrorCode code, std::string_view name = {}, std::string_view detail = {}) const;
+  Cell& cell(const VarRef& ref);
+  Cell& element(const VarRef& ref);
+  const std::string& variable_name(const VarRef& ref) const;
+  void assign(Cell& target, const Value& v, ChangeOverride change, const VarRef* ref);
+  std::int64_t to_integer(const Value& v, const VarRef* ref = nullptr) const;
+  double to_numeric(const Value& v, const VarRef* ref = nullptr) const;
+  bool to_logical(const Value& v) const;
+  void reset_cell(Cell& c, Type type) const;
+  Value& push_scratch();
+  void pop_scratch() { --scratch_top; }
+
+  // evaluate.cpp
+  void eval(std::uint32_t node, Value& out);
+  bool condition(std::uint32_t node);
+  void binary(const Node& n, Value& left, const Value& right);
+  void call_builtin(const Node& n, Value& out);
+
+  // execute.cpp
+  Flow run(std::uint32_t procedure, std::uint32_t args_list, std::uint32_t arg_count);
+  Flow execute(std::uint32_t procedure);
+  RunResult top_level(std::uint32_t procedure);
+
+  // output.cpp
+  void generate(std::uint32_t first, std::uint32_t count);
+  void render(const GenItem& item, std::string& out);
+  const DisplayFormat& format_for(const GenItem& item, const Value& v);
+  const DisplayFormat& cached(FormatCache& cache, std::string_view spec, SourcePos pos);
+  void append(std::string_view text);
+  void open_line();
+  void flush();
+  void new_block(SourcePos pos);
+  void new_line();
+  bool group_required(const GenItem& group);
+
+  // trace.cpp
+  int trace_level(std::uint32_t procedure) const;
+  void trace_statement(const std::string& list, std::int64_t level);
+  void trace_enter(std::string_view name, int depth, bool dump);
+  void trace_output(std::string_view text);
+  void trace_line(std::string text);
+};
+
+}  // namespace gppl

@@ -1,0 +1,230 @@
+// The generate statement and the output line model: spec 6.2 (nb, nl, skipline one-shot, flush,
+// remove_blanks, end_block_text, directives), 6.3 (block numbers and the separator rule),
+// 6.4 (format selection), 6.5 (modal groups, gcode_space), 6.6 (col, colrel).
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "gppl/machine.hpp"
+
+namespace gppl {
+
+namespace {
+
+// `!!verb file=X!!` lines are executed by the host, never written (6.7): no blank removal or
+// end-of-block text for them.
+bool is_directive(std::string_view line) {
+  const auto first = line.find_first_not_of(' ');
+  const auto last = line.find_last_not_of(' ');
+  if (first == std::string_view::npos || last - first + 1 < 4) return false;
+  return line.substr(first, 2) == "!!" && line.substr(last - 1, 2) == "!!";
+}
+
+constexpr std::string_view kIntegerDefault = "5.0(p)";
+constexpr std::string_view kNumericDefault = "5.3";
+
+}  // namespace
+
+void Interpreter::State::open_line() {
+  line.clear();
+  line_open = true;
+  separator_pending = false;
+  if (!frames.empty()) origin.procedure = program.procedures[frames.back().procedure].name;
+  else origin.procedure = {};
+  origin.source_line = current ? int(current->pos.line) : 0;
+}
+
+void Interpreter::State::append(std::string_view text) {
+  if (!line_open) open_line();
+  if (separator_pending && !text.empty()) {
+    if (text.front() != ' ') line += ' ';
+    separator_pending = false;
+  }
+  line += text;
+}
+
+void Interpreter::State::flush() {
+  if (!line_open) return;
+  line_open = false;
+  separator_pending = false;
+  if (!is_directive(line)) {
+    if (globals[program.slots.remove_blanks].value.logical) line.erase(std::remove(line.begin(), line.end(), ' '), line.end());
+    line += globals[program.slots.end_block_text].value.text;
+  }
+  sink.write_line(line, origin);
+  if (trace != nullptr) trace_output(line);
+}
+
+void Interpreter::State::new_block(SourcePos pos) {
+  Cell& skip = globals[program.slots.skipline];
+  if (!skip.value.logical) {
+    // One-shot: this nb continues the current line, the next one starts a block again (6.2).
+    assign(skip, Value::of_logical(true), ChangeOverride::Compute, nullptr);
+    return;
+  }
+  flush();
+  open_line();
+  if (!globals[program.slots.blknum_exist].value.logical || !globals[program.slots.blknum_gen].value.logical) return;
+  Cell& number = globals[program.slots.blknum];
+  const std::int64_t n = number.value.integer;
+  const std::int64_t max = globals[program.slots.blknum_max].value.integer;
+  if (n > max) fail_at(pos, ErrorCode::BlockNumberTooBig, {}, fmt::format("blknum {} is above blknum_max {}", n, max));
+  line += globals[program.slots.blknum_letter].value.text;
+  const std::string& spec = globals[program.slots.blknum_f].value.text;
+  const DisplayFormat& f = cached(format_sites[program.format_sites + 2],
+                                  spec.empty() ? std::string_view(globals[program.slots.integer_def_f].value.text) : spec, pos);
+  Value& v = push_scratch();
+  v = Value::of_integer(n);
+  try {
+    append_formatted(line, f, v);
+  } catch (const Error& e) {
+    pop_scratch();
+    throw Error(e.number(), program.position(pos), e.text());
+  }
+  v.integer = n + globals[program.slots.blknum_delta].value.integer;
+  assign(number, v, ChangeOverride::Compute, nullptr);
+  pop_scratch();
+  separator_pending = true;
+}
+
+void Interpreter::State::new_line() {
+  flush();
+  open_line();
+  Cell& skip = globals[program.slots.skipline];
+  if (!skip.value.logical) assign(skip, Value::of_logical(true), ChangeOverride::Compute, nullptr);
+}
+
+const DisplayFormat& Interpreter::State::cached(FormatCache& cache, std::string_view spec, SourcePos pos) {
+  if (cache.format && cache.spec == spec) return *cache.format;
+  try {
+    cache.format.emplace(parse_display_format(spec));
+  } catch (const Error& e) {
+    cache.format.reset();
+    throw Error(e.number(), program.position(pos), fmt::format("{} in display format '{}'", e.text(), spec));
+  }
+  cache.spec.assign(spec);
+  return *cache.format;
+}
+
+const DisplayFormat& Interpreter::State::format_for(const GenItem& item, const Value& v) {
+  FormatCache& site = format_sites[item.site];
+  switch (item.format_kind) {
+    case FormatKind::Constant: return cached(constant_formats[item.format], program.format_specs[item.format], item.pos);
+    case FormatKind::Dynamic: {
+      Value& spec = push_scratch();
+      eval(item.format, spec);
+      if (spec.type != Type::String)
+        fail_at(item.pos, ErrorCode::NotString, {}, "a display format must be a string");
+      if (!spec.text.empty()) {
+        const DisplayFormat& f = cached(site, spec.text, item.pos);
+        pop_scratch();
+        return f;
+      }
+      pop_scratch();
+      break;
+    }
+    case FormatKind::Default:
+      if (item.name_format != kNone) {
+        const std::string& spec = cell(program.refs[item.name_format]).value.text;
+        if (!spec.empty()) return cached(site, spec, item.pos);
+      }
+      break;
+  }
+  // Rules 3 and 4 of 6.4: integer_def_f for integers and logicals, numeric_def_f for numerics.
+  const bool numeric = v.type == Type::Numeric;
+  const std::string& spec = globals[numeric ? program.slots.numeric_def_f : program.slots.integer_def_f].value.text;
+  return cached(format_sites[program.format_sites + (numeric ? 1 : 0)],
+                spec.empty() ? (numeric ? kNumericDefault : kIntegerDefault) : std::string_view(spec), item.pos);
+}
+
+void Interpreter::State::render(const GenItem& item, std::string& out) {
+  if (item.kind == ItemKind::Text) {
+    out += program.constants[item.a].text;
+    return;
+  }
+  const Value* value = nullptr;
+  bool pushed = false;
+  if (item.ref != kNone) {
+    value = &element(program.refs[item.ref]).value;
+  } else {
+    Value& v = push_scratch();
+    pushed = true;
+    eval(item.a, v);
+    value = &v;
+  }
+  if (value->type == Type::String) {
+    out += value->text;  // strings print verbatim; a format is ignored (6.4)
+  } else {
+    const DisplayFormat& f = format_for(item, *value);
+    try {
+      append_formatted(out, f, *value);
+    } catch (const Error& e) {
+      if (pushed) pop_scratch();
+      throw Error(e.number(), program.position(item.pos), e.text());
+    }
+  }
+  if (pushed) pop_scratch();
+}
+
+bool Interpreter::State::group_required(const GenItem& group) {
+  for (std::uint32_t i = 0; i < group.required_count; ++i) {
+    const Cell& c = element(program.refs[program.lists[group.required + i]]);
+    if (c.active && c.changed) return true;
+  }
+  return false;
+}
+
+void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
+  const bool clear_change = globals[program.slots.clear_change_after_gen].value.logical;
+  for (std::uint32_t i = first; i < first + count; ++i) {
+    const GenItem& item = program.items[i];
+    switch (item.kind) {
+      case ItemKind::NewBlock: new_block(item.pos); break;
+      case ItemKind::NewLine: new_line(); break;
+      case ItemKind::Col:
+      case ItemKind::ColRel: {
+        Value& v = push_scratch();
+        eval(item.a, v);
+        const std::int64_t n = to_integer(v);
+        pop_scratch();
+        if (!line_open) open_line();
+        const std::int64_t blanks = item.kind == ItemKind::ColRel ? n : n - 1 - std::int64_t(line.size());
+        if (blanks > 0) {
+          if (blanks > 10000) fail_at(item.pos, ErrorCode::OutOfRange, {}, fmt::format("column {} is too far", n));
+          piece.assign(std::size_t(blanks), ' ');
+          append(piece);
+        }
+        break;
+      }
+      case ItemKind::Text: append(program.constants[item.a].text); break;
+      case ItemKind::Value: {
+        piece.clear();
+        render(item, piece);
+        append(piece);
+        if (clear_change && item.ref != kNone) element(program.refs[item.ref]).changed = false;
+        break;
+      }
+      case ItemKind::Group: {
+        const std::uint32_t members = item.a;
+        if (group_required(item)) {
+          generate(i + 1, members);
+        } else if (item.has_gcode && globals[program.slots.gcode_space].value.logical) {
+          // gcode_space: the suppressed G field becomes as many blanks as it would have printed (6.5).
+          piece.clear();
+          for (std::uint32_t k = i + 1; k <= i + members; ++k) {
+            const GenItem& m = program.items[k];
+            if (m.kind == ItemKind::Text || m.kind == ItemKind::Value) render(m, piece);
+          }
+          if (!line_open) open_line();
+          if (separator_pending) line += ' ';
+          separator_pending = false;
+          line.append(piece.size(), ' ');
+        }
+        i += members;
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace gppl

@@ -1,0 +1,158 @@
+// The compiled form of a post: names resolved to slots, statements flattened to instructions with
+// jump targets, expressions in one node arena. Built by the compiler, run by the interpreter.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "gppl/functions.hpp"
+#include "gppl/gppl.hpp"
+
+namespace gppl {
+
+constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+// A compact source position; the file is an index into Program::files.
+struct SourcePos {
+  std::uint32_t file = 0;
+  std::uint32_t line = 0;
+  std::uint32_t column = 0;
+};
+
+enum class Group : std::uint8_t { System, Host, Implicit, Global };
+
+// A variable that lives for the whole run (system, host, implicit host, global).
+struct GlobalVariable {
+  std::string name;
+  Type type = Type::Integer;
+  Group group = Group::Global;
+  bool read_only = false;
+  bool typed = true;                    // false: implicit host variable, typed by its first assignment
+  std::vector<int> dimensions;          // empty: scalar
+  std::uint32_t first_cell = 0;
+  std::uint32_t cell_count = 1;
+  Value initial;                        // value at the start of a run
+  bool initially_active = true;
+  SourcePos declared;                   // globals: first declaration
+};
+
+// A local of one procedure (typed parameters come first).
+struct LocalVariable {
+  std::string name;
+  Type type = Type::Integer;
+  std::vector<int> dimensions;
+  std::uint32_t offset = 0;  // first cell in the frame
+  std::uint32_t cell_count = 1;
+};
+
+// Where a variable reference points: a global variable id, or a local of the running procedure.
+struct VarRef {
+  bool local = false;
+  std::uint32_t id = 0;     // GlobalVariable index or LocalVariable index
+  std::uint32_t cell = 0;   // first cell (global cell index or frame offset)
+  std::uint32_t indices = kNone;  // first entry in Program::lists of the index expressions (arrays)
+  std::uint32_t index_count = 0;
+};
+
+enum class NodeKind : std::uint8_t { Constant, Variable, Attribute, Negate, Not, Binary, And, Or, Call };
+enum class BinaryOp : std::uint8_t { Add, Sub, Mul, Div, Pow, Eq, Ne, Lt, Le, Gt, Ge };
+
+struct Node {
+  NodeKind kind = NodeKind::Constant;
+  BinaryOp op = BinaryOp::Add;
+  bool active_attribute = false;  // Attribute: active (true) or change (false)
+  std::uint32_t a = 0;            // Constant: constant index; Variable/Attribute: ref index; unary/binary: child
+  std::uint32_t b = 0;            // binary: right child
+  std::uint32_t list = 0;         // Call: first argument in Program::lists
+  std::uint32_t count = 0;        // Call: number of arguments
+  std::uint32_t format = kNone;   // Call (tostr): node of the `:format` of the first argument
+  const FunctionSignature* function = nullptr;
+  SourcePos pos;
+};
+
+// Generate items (6.1). A group item is followed by its `count` member items.
+enum class ItemKind : std::uint8_t { NewBlock, NewLine, Col, ColRel, Text, Value, Group };
+enum class FormatKind : std::uint8_t { Default, Constant, Dynamic };
+
+struct GenItem {
+  ItemKind kind = ItemKind::Text;
+  std::uint32_t a = 0;            // Text: constant index; Value/Col/ColRel: node; Group: member count
+  std::uint32_t ref = kNone;      // Value: ref index when the operand is a plain variable or element
+  FormatKind format_kind = FormatKind::Default;
+  std::uint32_t format = kNone;   // Constant: format index; Dynamic: node
+  std::uint32_t name_format = kNone;  // VarRef index of `name_f` for plain scalar variables
+  std::uint32_t site = 0;         // format cache slot
+  std::uint32_t required = 0;     // Group: first ref in Program::lists that make it required
+  std::uint32_t required_count = 0;
+  bool has_gcode = false;         // Group: contains the variable gcode (gcode_space)
+  SourcePos pos;
+};
+
+enum class OpCode : std::uint8_t {
+  Nop, Assign, SetChange, SetActive, JumpIfFalse, LoopIfFalse, Jump, Call, Generate, Trace, Abort, Exit, Return
+};
+
+struct Instruction {
+  OpCode op = OpCode::Nop;
+  std::uint32_t a = 0;  // Assign/Set*: target ref; Jump*: target instruction; Call: procedure; Generate: first item; Trace: constant
+  std::uint32_t b = 0;  // Assign/Set*/JumpIfFalse/LoopIfFalse/Trace: expression node; Generate: item count; Call: first arg
+  std::uint32_t c = 0;  // LoopIfFalse: exit target; Call: argument count
+  SourcePos pos;
+};
+
+struct Procedure {
+  std::string name;  // "@line", as written in the header
+  SourcePos pos;
+  std::uint32_t first = 0;  // instructions [first, end)
+  std::uint32_t end = 0;
+  std::uint32_t parameter_count = 0;
+  std::vector<LocalVariable> locals;
+  std::uint32_t frame_size = 0;
+  bool defined = true;  // false: referenced by `call` only (error reported at load time)
+};
+
+// Slots of the system variables the generator and the block numbering use directly.
+struct SystemSlots {
+  std::uint32_t skipline, blknum, blknum_delta, blknum_max, blknum_exist, blknum_gen, blknum_letter, blknum_f,
+      integer_def_f, numeric_def_f, remove_blanks, end_block_text, gcode_space, clear_change_after_gen;
+  std::uint32_t gcode;  // variable id (gcode_space pads groups that print it)
+};
+
+}  // namespace gppl
+
+namespace gppl {
+
+class Program {
+public:
+  std::vector<std::string> files;
+  std::vector<GlobalVariable> globals;
+  std::uint32_t global_cells = 0;
+  std::vector<Procedure> procedures;
+  std::vector<Instruction> code;
+  std::vector<Node> nodes;
+  std::vector<VarRef> refs;
+  std::vector<std::uint32_t> lists;  // index/argument node lists, group requirement refs
+  std::vector<GenItem> items;
+  std::vector<Value> constants;
+  std::vector<std::string> format_specs;  // constant display formats (parsed per interpreter)
+  std::uint32_t format_sites = 0;
+  std::optional<std::uint32_t> init_post;
+  std::vector<std::uint32_t> init_inc;  // one per file that defines it, in inclusion order
+  SystemSlots slots{};
+  std::vector<std::string> warnings;
+
+  std::unordered_map<std::string, std::uint32_t> global_index;     // lower-case name -> globals
+  std::unordered_map<std::string, std::uint32_t> procedure_index;  // lower-case "@name" -> procedures
+
+  Position position(SourcePos p) const {
+    return Position{p.file < files.size() ? files[p.file] : std::string(), int(p.line), int(p.column)};
+  }
+};
+
+// ASCII case-insensitive comparison for names.
+bool same_name(std::string_view a, std::string_view b);
+
+}  // namespace gppl
