@@ -27,13 +27,6 @@ BinaryOp relation(std::string_view op) {
   return BinaryOp::Ge;
 }
 
-// Arguments a built-in needs at least (the rest are optional).
-std::size_t required_arguments(const FunctionSignature& f) {
-  if (same_name(f.name, "replace")) return 3;
-  if (same_name(f.name, "tostr")) return 1;
-  return f.parameters.size();
-}
-
 }  // namespace
 
 std::uint32_t Compiler::emit(OpCode op, SourcePos pos, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
@@ -298,7 +291,7 @@ std::uint32_t Compiler::call_node(const SyntaxNode& n, Context& ctx) {
       const SyntaxNode& arg = *list[i];
       args.push_back(expression(*arg.children[0], ctx));
       if (arg.children.size() < 2) continue;
-      if (i != 0 || !same_name(node.function->name, "tostr")) {
+      if (i != 0 || !node.function->format_argument) {
         error(ErrorCode::Unrecognized, node_pos(*arg.children[1], ctx.file), {},
               "a display format ':' is allowed only in tostr");
         continue;
@@ -306,8 +299,9 @@ std::uint32_t Compiler::call_node(const SyntaxNode& n, Context& ctx) {
       node.format = expression(*arg.children[1]->children[0], ctx);
     }
   }
-  const std::size_t most = node.function->parameters.size();
-  const std::size_t least = required_arguments(*node.function);
+  // tostr's format parameter is written `x : fmt`, never as an argument of its own.
+  const std::size_t most = node.function->parameters.size() - (node.function->format_argument ? 1 : 0);
+  const std::size_t least = std::min(node.function->min_args, most);
   if (args.size() < least || args.size() > most) {
     error(ErrorCode::Unrecognized, pos, {},
           least == most ? fmt::format("{} takes {} argument(s), {} given", node.function->name, most, args.size())

@@ -172,37 +172,40 @@ void Interpreter::State::binary(const Node& n, Value& left, const Value& right) 
 void Interpreter::State::call_builtin(const Node& n, Value& out) {
   const FunctionSignature& f = *n.function;
   const std::uint32_t base = argument_top;
-  const std::uint32_t count = std::uint32_t(f.parameters.size());
+  // Given arguments, plus tostr's format (written `x : fmt`; numeric_def_f when absent, 9.3).
+  const std::uint32_t count = n.count + (f.format_argument ? 1 : 0);
   argument_top += count;
   if (arguments.size() < argument_top) arguments.resize(argument_top);
+  bool all_integer = true;
   for (std::uint32_t i = 0; i < count; ++i) {
     Value& v = push_scratch();
-    const Type want = f.parameters[i];
-    if (i < n.count) {
-      eval(program.lists[n.list + i], v);
-    } else if (same_name(f.name, "tostr")) {
-      // tostr(x) / tostr(x : fmt): the format is the second parameter; default numeric_def_f (9.3).
-      if (n.format != kNone) eval(n.format, v);
-      else v = globals[program.slots.numeric_def_f].value;
-      if (v.type == Type::String && v.text.empty()) v.text = "5.3";
-    } else {
-      set_integer(v, 0);  // omitted optional argument (replace's k)
-    }
+    if (i < n.count) eval(program.lists[n.list + i], v);
+    else if (n.format != kNone) eval(n.format, v);
+    else v = globals[program.slots.numeric_def_f].value;
+    all_integer = all_integer && (v.type == Type::Integer || v.type == Type::Logical);
+    std::swap(arguments[base + i], v);
+    pop_scratch();
+  }
+  for (std::uint32_t i = 0; i < count; ++i) {
+    Value& v = arguments[base + i];
+    Type want = f.parameters[i];
+    if (f.integer_if_integer_args && want == Type::Numeric && all_integer) want = Type::Integer;
     switch (want) {
       case Type::Integer: {
         const std::int64_t x = to_integer(v);
         set_integer(v, x);
         break;
       }
-      case Type::Numeric: set_numeric(v, to_numeric(v)); break;
+      case Type::Numeric:
+        if (v.type != Type::Integer) set_numeric(v, to_numeric(v));
+        break;
       case Type::Logical: set_logical(v, to_logical(v)); break;
       case Type::String:
         if (v.type != Type::String)
-          fail_at(n.pos, ErrorCode::NotString, {}, fmt::format("argument {} of {} must be a string", i + 1, f.name));
+          fail_at(n.pos, ErrorCode::NotString, {},
+                  fmt::format("argument {} of {} must be a string", i + 1, f.name));
         break;
     }
-    std::swap(arguments[base + i], v);
-    pop_scratch();
   }
   try {
     out = call_function(f, std::span<const Value>(arguments.data() + base, count));
