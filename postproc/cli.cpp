@@ -53,6 +53,7 @@ std::string Arguments::value(std::string_view option, std::string_view fallback)
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> all = {
       read_command(),
+      plot_command(),
   };
   return all;
 }

@@ -59,5 +59,6 @@ int main(std::span<const std::string> args, std::ostream& out, std::ostream& err
 
 // The subcommands, one per file (cmd_*.cpp).
 Subcommand read_command();
+Subcommand plot_command();
 
 }  // namespace postproc::cli

@@ -9,7 +9,13 @@ namespace pikocnc {
 using toolpath::Command;
 using toolpath::Value;
 
-toolpath::Command& Emitter::add(std::string_view name) {
+void Emitter::finish_command() {
+  if (current_) current_->parameters.resize(fill_);
+  current_ = nullptr;
+}
+
+void Emitter::add(std::string_view name) {
+  finish_command();
   if (tail_ == queue_.size()) {
     queue_.emplace_back();
     lines_.push_back(0);
@@ -17,58 +23,59 @@ toolpath::Command& Emitter::add(std::string_view name) {
   Command& c = queue_[tail_];
   lines_[tail_] = line_;
   ++tail_;
-  c.name.assign(name);
-  c.index = next_index_++;
+  if (c.name != name) c.name.assign(name);
   c.depth = 1;
-  c.parameters.clear();
   c.trace.clear();
+  current_ = &c;
+  fill_ = 0;
   if (attach_ && !line_attached_ && line_ > 0) {
     c.trace.push_back({toolpath::TraceLine::Kind::Output, std::string(line_text_)});
     line_attached_ = true;
   }
-  return c;
 }
 
 bool Emitter::pop(toolpath::Command& out, std::size_t& line) {
+  finish_command();
   if (head_ == tail_) return false;
   std::swap(out, queue_[head_]);
+  out.index = next_index_++;
   line = lines_[head_];
   if (++head_ == tail_) head_ = tail_ = 0;
   return true;
 }
 
-void Emitter::number(Command& c, std::string_view name, double v) {
-  c.parameters.push_back({std::string(name), Value::make_numeric(clean(v))});
-}
-void Emitter::integer(Command& c, std::string_view name, long long v) {
-  c.parameters.push_back({std::string(name), Value::make_integer(v)});
-}
-void Emitter::logical(Command& c, std::string_view name, bool v) {
-  c.parameters.push_back({std::string(name), Value::make_logical(v)});
-}
-void Emitter::text(Command& c, std::string_view name, std::string_view v) {
-  c.parameters.push_back({std::string(name), Value::make_string(std::string(v))});
-}
-void Emitter::word(Command& c, std::string_view name, std::string_view v) {
-  c.parameters.push_back({std::string(name), Value::make_enum(std::string(v))});
+toolpath::Value& Emitter::slot(std::string_view name, toolpath::ValueKind kind) {
+  auto& params = current_->parameters;
+  if (fill_ == params.size()) params.emplace_back();
+  toolpath::Parameter& p = params[fill_++];
+  if (p.name != name) p.name.assign(name);  // a recycled command usually has the same names
+  p.value.kind = kind;
+  p.value.flag = toolpath::ChangeFlag::None;
+  return p.value;
 }
 
-void Emitter::positions(Command& c, const Eigen::Vector3d& p, double a, double b) {
-  number(c, "xpos", p.x());
-  number(c, "ypos", p.y());
-  number(c, "zpos", p.z());
-  if (with_a_) number(c, "apos", a);
-  if (with_b_) number(c, "bpos", b);
+void Emitter::number(std::string_view name, double v) { slot(name, toolpath::ValueKind::Numeric).numeric = clean(v); }
+void Emitter::integer(std::string_view name, long long v) { slot(name, toolpath::ValueKind::Integer).integer = v; }
+void Emitter::logical(std::string_view name, bool v) { slot(name, toolpath::ValueKind::Logical).logical = v; }
+void Emitter::text(std::string_view name, std::string_view v) { slot(name, toolpath::ValueKind::String).text.assign(v); }
+void Emitter::word(std::string_view name, std::string_view v) { slot(name, toolpath::ValueKind::Enum).text.assign(v); }
+
+void Emitter::positions(const Eigen::Vector3d& p, double a, double b) {
+  number("xpos", p.x());
+  number("ypos", p.y());
+  number("zpos", p.z());
+  if (with_a_) number("apos", a);
+  if (with_b_) number("bpos", b);
 }
 
 void Emitter::straight(const Move& m, const Eigen::Vector3d& to, bool from_arc) {
   const bool rapid = m.kind == MoveKind::Rapid;
-  Command& c = add(rapid ? "@rapid_move" : m.kind == MoveKind::Thread ? "@thread_move" : "@line");
-  positions(c, to, m.a, m.b);
-  if (!rapid) number(c, "feed", m.feed);
-  if (m.kind == MoveKind::Thread) number(c, "pitch", m.pitch);
-  if (from_arc) logical(c, "from_arc", true);
-  if (m.protected_move) logical(c, "protected", true);
+  add(rapid ? "@rapid_move" : m.kind == MoveKind::Thread ? "@thread_move" : "@line");
+  positions(to, m.a, m.b);
+  if (!rapid) number("feed", m.feed);
+  if (m.kind == MoveKind::Thread) number("pitch", m.pitch);
+  if (from_arc) logical("from_arc", true);
+  if (m.protected_move) logical("protected", true);
 }
 
 void Emitter::move(const Move& m, const Frame& frame) {
@@ -97,22 +104,22 @@ void Emitter::move(const Move& m, const Frame& frame) {
   const bool ccw = m.ccw != (normal[k] < 0);
   const Eigen::Vector3d from = frame.to_work(m.from), to = frame.to_work(m.to), centre = frame.to_work(m.centre);
   const Eigen::Vector2d s2 = in_plane(from, plane), e2 = in_plane(to, plane), c2 = in_plane(centre, plane);
-  Command& c = add("@arc");
-  positions(c, to, m.a, m.b);
-  number(c, "feed", m.feed);
-  number(c, "xcenter", centre.x());
-  number(c, "ycenter", centre.y());
-  number(c, "zcenter", centre.z());
-  number(c, "xcenter_rel", centre.x() - from.x());
-  number(c, "ycenter_rel", centre.y() - from.y());
-  number(c, "zcenter_rel", centre.z() - from.z());
-  number(c, "radius", (s2 - c2).norm());
-  number(c, "start_angle", angle_degrees(s2, c2));
-  number(c, "end_angle", angle_degrees(e2, c2));
-  number(c, "arc_size", m.sweep * 180.0 / kPi);
-  word(c, "arc_direction", ccw ? "CCW" : "CW");
-  word(c, "arc_plane", plane_name(plane));
-  if (m.compensated) logical(c, "compensated", true);
+  add("@arc");
+  positions(to, m.a, m.b);
+  number("feed", m.feed);
+  number("xcenter", centre.x());
+  number("ycenter", centre.y());
+  number("zcenter", centre.z());
+  number("xcenter_rel", centre.x() - from.x());
+  number("ycenter_rel", centre.y() - from.y());
+  number("zcenter_rel", centre.z() - from.z());
+  number("radius", (s2 - c2).norm());
+  number("start_angle", angle_degrees(s2, c2));
+  number("end_angle", angle_degrees(e2, c2));
+  number("arc_size", m.sweep * 180.0 / kPi);
+  word("arc_direction", ccw ? "CCW" : "CW");
+  word("arc_plane", plane_name(plane));
+  if (m.compensated) logical("compensated", true);
 }
 
 void Emitter::chords(const Move& m, const Frame& frame) {

@@ -15,15 +15,16 @@ class Emitter {
 public:
   explicit Emitter(double chord_tolerance) : chord_tolerance_(chord_tolerance) {}
 
-  // Starts a new command at the end of the queue; its parameters are added with the helpers below.
-  toolpath::Command& add(std::string_view name);
+  // Starts a new command at the end of the queue; the helpers below add its parameters. Commands
+  // are recycled with their buffers, so a long program allocates nothing per command.
+  void add(std::string_view name);
   void move(const Move& m, const Frame& frame);
 
-  static void number(toolpath::Command& c, std::string_view name, double v);
-  static void integer(toolpath::Command& c, std::string_view name, long long v);
-  static void logical(toolpath::Command& c, std::string_view name, bool v);
-  static void text(toolpath::Command& c, std::string_view name, std::string_view v);
-  static void word(toolpath::Command& c, std::string_view name, std::string_view v);
+  void number(std::string_view name, double v);
+  void integer(std::string_view name, long long v);
+  void logical(std::string_view name, bool v);
+  void text(std::string_view name, std::string_view v);
+  void word(std::string_view name, std::string_view v);
 
   bool empty() const { return head_ == tail_; }
   // Hands the oldest queued command over (swapping buffers); false when the queue is empty.
@@ -41,11 +42,15 @@ public:
   void use_b() { with_b_ = true; }
 
 private:
-  void positions(toolpath::Command& c, const Eigen::Vector3d& p, double a, double b);
+  void finish_command();
+  toolpath::Value& slot(std::string_view name, toolpath::ValueKind kind);
+  void positions(const Eigen::Vector3d& p, double a, double b);
   void straight(const Move& m, const Eigen::Vector3d& to, bool from_arc);
   void chords(const Move& m, const Frame& frame);
 
   std::vector<toolpath::Command> queue_;
+  toolpath::Command* current_ = nullptr;  // the command being filled
+  std::size_t fill_ = 0;                  // its parameters so far
   std::vector<std::size_t> lines_;
   std::size_t head_ = 0, tail_ = 0;
   std::size_t next_index_ = 0;

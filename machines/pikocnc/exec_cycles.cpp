@@ -116,8 +116,8 @@ void Interpreter::cycle_hole(Op op, const Eigen::Vector3d& hole) {
       cycle_feed_z(z);
       spindle_event(5);
       if (s_.cycle_p > 0) {
-        auto& c = emitter_.add("@delay");
-        Emitter::number(c, "delay_period", s_.cycle_p);
+        emitter_.add("@delay");
+        emitter_.number("delay_period", s_.cycle_p);
       }
       spindle_event(reverse);
       cycle_feed_z(r);
@@ -195,15 +195,15 @@ void Interpreter::probe(Words& w) {
     warn(w.col('P'), fmt::format("G65 P{} is not a documented probing cycle: ignored", cycle));
     return;
   }
-  auto& c = emitter_.add("@probe");
-  Emitter::integer(c, "cycle", cycle);
+  emitter_.add("@probe");
+  emitter_.integer("cycle", cycle);
   std::string args;
   for (char l : std::string_view("XYZDQRSWF")) {
     if (!w.owned(l)) continue;
     const double v = w.raw(l);
     args += fmt::format("{}{}{}", args.empty() ? "" : " ", l, v);
   }
-  Emitter::text(c, "args", args);
+  emitter_.text("args", args);
   // With S the measured base S := active base + error; the simulator measures no error.
   if (!w.b.has('S')) return;
   const int s = static_cast<int>(w.b.get('S'));
@@ -211,7 +211,7 @@ void Interpreter::probe(Words& w) {
     warn(w.col('S'), fmt::format("G65 S{} is not a work offset 1..6: no correction", s));
     return;
   }
-  Emitter::integer(c, "corrects_base", 53 + s);
+  emitter_.integer("corrects_base", 53 + s);
   bool axis[2] = {false, false};
   if (cycle == 9811 || cycle == 9812) {
     axis[0] = w.b.has('X');

@@ -9,8 +9,10 @@
 
 namespace pikocnc {
 
-Frame Interpreter::frame() const {
-  Frame f;
+const Frame& Interpreter::frame() const {
+  if (!frame_dirty_) return frame_;
+  frame_dirty_ = false;
+  Frame& f = frame_;
   f.identity = s_.transforms.empty();
   f.m = s_.transforms.composite();
   f.off = {s_.program_offset[0], s_.program_offset[1], s_.program_offset[2]};
@@ -27,6 +29,7 @@ Axes5 Interpreter::work_position() const {
 }
 
 void Interpreter::recompute_program_position() {
+  frame_dirty_ = true;
   const Axes5 w = work_position();
   const Eigen::Vector3d p(w[0] - s_.program_offset[0], w[1] - s_.program_offset[1], w[2] - s_.program_offset[2]);
   if (s_.transforms.empty()) {
@@ -55,8 +58,8 @@ void Interpreter::offsets(const Resolved& r, Words& w) {
     if (!r.has(kBases[i]) || s_.work_offset == i) continue;
     s_.work_offset = i;
     recompute_program_position();
-    auto& c = emitter_.add("@home_number");
-    Emitter::integer(c, "home_number", 54 + i);
+    emitter_.add("@home_number");
+    emitter_.integer("home_number", 54 + i);
   }
   auto axis_value = [&](int i) { return i < 3 ? w.len("XYZAB"[i]) : w.raw("XYZAB"[i]); };
   if (r.has(Op::G10) || r.has(Op::G10_1) || r.has(Op::G10_2)) {

@@ -60,7 +60,7 @@ void Interpreter::straight(MoveKind kind, const Eigen::Vector3d& to, double a, d
   m.kind = kind;
   m.from = s_.prog;
   m.to = to;
-  const Frame f = frame();
+  const Frame& f = frame();
   m.a = a + f.off_a;
   m.b = b + f.off_b;
   m.feed = s_.feed;
@@ -91,17 +91,17 @@ void Interpreter::motion(const Resolved& r, Words& w) {
     case Op::G65: probe(w); return;
     case Op::G76: lathe_thread(w); return;
     case Op::Macro: {
-      auto& c = emitter_.add("@macro");
-      Emitter::text(c, "name", fmt::format("G{}", r.macro.number));
-      if (r.macro.dot_digits) Emitter::integer(c, "dot_value", r.macro.dot);
+      emitter_.add("@macro");
+      emitter_.text("name", fmt::format("G{}", r.macro.number));
+      if (r.macro.dot_digits) emitter_.integer("dot_value", r.macro.dot);
       std::string args;
       for (char l : std::string_view("XYZABFPQ")) {
         if (!w.owned(l)) continue;
         const double v = w.raw(l);
         args += fmt::format("{}{}{}", args.empty() ? "" : " ", l, v);
-        Emitter::number(c, fmt::format("arg_{}", static_cast<char>(l | 0x20)), v);
+        emitter_.number(fmt::format("arg_{}", static_cast<char>(l | 0x20)), v);
       }
-      Emitter::text(c, "args", args);
+      emitter_.text("args", args);
       return;
     }
     case Op::Unknown: break;
@@ -212,7 +212,7 @@ void Interpreter::arc(bool ccw, Words& w) {
   m.sweep = sweep_angle(s2, e2, c2, ccw);
   m.feed = s_.feed;
   if (s_.feed <= 0) warn(motion_column_, "arc without a feed rate (F)");
-  const Frame f = frame();
+  const Frame& f = frame();
   m.a = s_.prog_a + f.off_a;
   m.b = s_.prog_b + f.off_b;
   s_.prog = end;

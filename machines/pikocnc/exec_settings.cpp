@@ -35,25 +35,25 @@ void Interpreter::feed_and_spindle(const Resolved& r, Words& w) {
     s_.spindle = s;
   }
   if (!changed) return;
-  auto& c = emitter_.add("@m_feed_spin");
-  Emitter::word(c, "feed_unit", s_.per_rev ? "MM_REV" : "MM_MIN");
-  Emitter::number(c, "feed", s_.feed);
-  Emitter::word(c, "spin_unit", s_.css ? "CSS" : "RPM");
-  Emitter::number(c, "spin", s_.spindle);
-  if (s_.css_limit > 0) Emitter::number(c, "spin_limit", s_.css_limit);
+  emitter_.add("@m_feed_spin");
+  emitter_.word("feed_unit", s_.per_rev ? "MM_REV" : "MM_MIN");
+  emitter_.number("feed", s_.feed);
+  emitter_.word("spin_unit", s_.css ? "CSS" : "RPM");
+  emitter_.number("spin", s_.spindle);
+  if (s_.css_limit > 0) emitter_.number("spin_limit", s_.css_limit);
 }
 
 void Interpreter::spindle_event(int m) {
   s_.spindle_m = m;
   if (m == 5) {
-    auto& c = emitter_.add("@stop_tool");
-    Emitter::integer(c, "mcode", 5);
+    emitter_.add("@stop_tool");
+    emitter_.integer("mcode", 5);
     return;
   }
-  auto& c = emitter_.add("@start_tool");
-  Emitter::word(c, "spin_direction", m == 3 ? "CW" : "CCW");
-  Emitter::number(c, "spin", s_.spindle);
-  Emitter::integer(c, "mcode", m);
+  emitter_.add("@start_tool");
+  emitter_.word("spin_direction", m == 3 ? "CW" : "CCW");
+  emitter_.number("spin", s_.spindle);
+  emitter_.integer("mcode", m);
 }
 
 void Interpreter::tool_and_m_codes(const Resolved& r, Words& w) {
@@ -68,13 +68,13 @@ void Interpreter::tool_and_m_codes(const Resolved& r, Words& w) {
       warn(r.column(Op::M6), "M6 with no tool selected: ignored");
     } else {
       if (options_.macro_m_codes.count(6)) {
-        auto& m = emitter_.add("@macro");
-        Emitter::text(m, "name", "M6");
-        Emitter::integer(m, "arg_t", s_.selected_tool);
+        emitter_.add("@macro");
+        emitter_.text("name", "M6");
+        emitter_.integer("arg_t", s_.selected_tool);
       }
       s_.tool = s_.selected_tool;
-      auto& c = emitter_.add("@change_tool");
-      Emitter::integer(c, "tool_number", s_.tool);
+      emitter_.add("@change_tool");
+      emitter_.integer("tool_number", s_.tool);
       const auto it = options_.tools.find(s_.tool);
       set_tool_offset(it == options_.tools.end() ? Axes5{} : it->second.offset);
     }
@@ -83,9 +83,9 @@ void Interpreter::tool_and_m_codes(const Resolved& r, Words& w) {
     if (!r.has(op)) continue;
     const int m = op == Op::M3 ? 3 : op == Op::M4 ? 4 : 5;
     if (options_.macro_m_codes.count(m)) {
-      auto& c = emitter_.add("@macro");
-      Emitter::text(c, "name", fmt::format("M{}", m));
-      if (m == 3) Emitter::number(c, "arg_s", s_.spindle);
+      emitter_.add("@macro");
+      emitter_.text("name", fmt::format("M{}", m));
+      if (m == 3) emitter_.number("arg_s", s_.spindle);
     }
     spindle_event(m);
   }
@@ -100,11 +100,11 @@ void Interpreter::tool_and_m_codes(const Resolved& r, Words& w) {
       case 10: s_.c_m10 = true; break;
       case 11: s_.c_m10 = false; break;
     }
-    auto& c = emitter_.add("@coolant");
-    Emitter::integer(c, "mcode", kNumbers[i]);
-    Emitter::logical(c, "c_m7", s_.c_m7);
-    Emitter::logical(c, "c_m8", s_.c_m8);
-    Emitter::logical(c, "c_m10", s_.c_m10);
+    emitter_.add("@coolant");
+    emitter_.integer("mcode", kNumbers[i]);
+    emitter_.logical("c_m7", s_.c_m7);
+    emitter_.logical("c_m8", s_.c_m8);
+    emitter_.logical("c_m10", s_.c_m10);
   }
   if (r.has(Op::G4)) {  // 8. dwell, P in seconds
     if (!w.has('P')) {
@@ -112,8 +112,8 @@ void Interpreter::tool_and_m_codes(const Resolved& r, Words& w) {
     } else if (const double p = w.raw('P'); p < 0) {
       warn(w.col('P'), "G4 with a negative P: no dwell");
     } else {
-      auto& c = emitter_.add("@delay");
-      Emitter::number(c, "delay_period", p);
+      emitter_.add("@delay");
+      emitter_.number("delay_period", p);
     }
   }
 }
@@ -159,9 +159,9 @@ void Interpreter::misc_modes(const Resolved& r, Words& w) {
       if (op == Op::G43 && w.owned('T')) {
         s_.tool = static_cast<int>(w.raw('T'));
         next = table(s_.tool);
-        auto& c = emitter_.add("@change_tool");
-        Emitter::integer(c, "tool_number", s_.tool);
-        Emitter::logical(c, "silent", true);
+        emitter_.add("@change_tool");
+        emitter_.integer("tool_number", s_.tool);
+        emitter_.logical("silent", true);
       }
       if (op == Op::G43 && w.owned('H')) next = table(static_cast<int>(w.raw('H')));
       bool any_axis = false;
@@ -186,21 +186,21 @@ void Interpreter::misc_modes(const Resolved& r, Words& w) {
   if (r.has(Op::G234) || r.has(Op::G235)) {
     s_.tcpc = r.has(Op::G234);
     s_.tcpc_slot = s_.tcpc ? r.tcpc.dot : 0;
-    auto& c = emitter_.add("@tcpc");
-    Emitter::logical(c, "tcpc_on", s_.tcpc);
-    Emitter::integer(c, "slot", s_.tcpc_slot);
+    emitter_.add("@tcpc");
+    emitter_.logical("tcpc_on", s_.tcpc);
+    emitter_.integer("slot", s_.tcpc_slot);
   }
   if (r.has(Op::G116) || r.has(Op::G117)) {
     s_.pause_allowed = r.has(Op::G116);
-    auto& c = emitter_.add("@pause_button");
-    Emitter::logical(c, "allowed", s_.pause_allowed);
+    emitter_.add("@pause_button");
+    emitter_.logical("allowed", s_.pause_allowed);
   }
   if (r.has(Op::G115)) g115_seen_ = true;
   // 17. on-screen message
   if (r.has(Op::G120)) {
-    auto& c = emitter_.add("@message");
-    Emitter::text(c, "message", w.b.has_comment ? w.b.comment : std::string_view());
-    Emitter::logical(c, "screen", true);
+    emitter_.add("@message");
+    emitter_.text("message", w.b.has_comment ? w.b.comment : std::string_view());
+    emitter_.logical("screen", true);
   }
 }
 

@@ -24,11 +24,11 @@ Interpreter::Interpreter(std::istream& in, std::string file_name, Options option
   recompute_program_position();
   if (options_.start_position[3] != 0) emitter_.use_a();
   if (options_.start_position[4] != 0) emitter_.use_b();
-  auto& c = emitter_.add("@start_of_file");
+  emitter_.add("@start_of_file");
   const std::size_t slash = file_.find_last_of("/\\");
-  Emitter::text(c, "g_file_name", slash == std::string::npos ? file_ : file_.substr(slash + 1));
-  Emitter::text(c, "dialect", dialect_name(options_.dialect));
-  Emitter::logical(c, "inch_system", false);
+  emitter_.text("g_file_name", slash == std::string::npos ? file_ : file_.substr(slash + 1));
+  emitter_.text("dialect", dialect_name(options_.dialect));
+  emitter_.logical("inch_system", false);
 }
 
 void Interpreter::fail(std::size_t column, const std::string& message) const {
@@ -53,11 +53,11 @@ bool Interpreter::run() {
         started_ = true;
         program_start_ = lines_.mark();
         emitter_.set_line(line_, text);
-        auto& c = emitter_.add("@start_program");
+        emitter_.add("@start_program");
         const Axes5 w = work_position();
-        Emitter::number(c, "xpos", w[0]);
-        Emitter::number(c, "ypos", w[1]);
-        Emitter::number(c, "zpos", w[2]);
+        emitter_.number("xpos", w[0]);
+        emitter_.number("ypos", w[1]);
+        emitter_.number("zpos", w[2]);
       }
       continue;
     }
@@ -77,12 +77,12 @@ bool Interpreter::run() {
 void Interpreter::finish(std::string_view end_code) {
   compensator_.flush(emitter_, diagnostics_);
   if (started_) {
-    auto& c = emitter_.add("@end_program");
+    emitter_.add("@end_program");
     const Axes5 w = work_position();
-    Emitter::number(c, "xpos", w[0]);
-    Emitter::number(c, "ypos", w[1]);
-    Emitter::number(c, "zpos", w[2]);
-    Emitter::text(c, "end_code", end_code);
+    emitter_.number("xpos", w[0]);
+    emitter_.number("ypos", w[1]);
+    emitter_.number("zpos", w[2]);
+    emitter_.text("end_code", end_code);
   }
   // G115 anywhere in the program switches the automatic approach off, also in lines never executed.
   std::string_view text;
@@ -92,13 +92,17 @@ void Interpreter::finish(std::string_view end_code) {
     for (std::size_t i = 0; i < rest.code_count; ++i)
       if (const CodeInfo* info = find_code(rest.codes[i], options_.dialect); info && info->op == Op::G115) g115_seen_ = true;
   }
-  auto& e = emitter_.add("@end_of_file");
-  Emitter::logical(e, "auto_approach", !g115_seen_);
+  emitter_.add("@end_of_file");
+  emitter_.logical("auto_approach", !g115_seen_);
   finished_ = true;
 }
 
+void Interpreter::ResolvedDeleter::operator()(Resolved* r) const { delete r; }
+
 void Interpreter::execute(const Block& block) {
-  Resolved r;
+  if (!resolved_) resolved_.reset(new Resolved);
+  Resolved& r = *resolved_;
+  r.reset();
   for (std::size_t i = 0; i < block.code_count; ++i) {
     const CodeWord& cw = block.codes[i];
     const CodeInfo* info = find_code(cw, options_.dialect);
@@ -119,8 +123,8 @@ void Interpreter::execute(const Block& block) {
 
   // 1. comment text; 2. loop start
   if (block.has_comment && options_.comments_as_messages && !r.has(Op::G120)) {
-    auto& c = emitter_.add("@message");
-    Emitter::text(c, "message", block.comment);
+    emitter_.add("@message");
+    emitter_.text("message", block.comment);
   }
   if (r.has(Op::G25)) {
     if (!w.has('R')) fail(r.column(Op::G25), "G25 needs R (the number of passes)");
@@ -132,11 +136,14 @@ void Interpreter::execute(const Block& block) {
     loops_.push_back({lines_.mark(), static_cast<long long>(count), line_});
   }
   // 3-17: settings, in the documented order (exec_settings.cpp); units first so that lengths convert
-  feed_and_spindle(r, w);
-  tool_and_m_codes(r, w);
-  misc_modes(r, w);
-  offsets(r, w);
-  transforms(r, w);
+  const bool codes = !r.only_motion();
+  if (codes || w.has('F') || w.has('S')) feed_and_spindle(r, w);
+  if (codes || w.has('T')) tool_and_m_codes(r, w);
+  if (codes) {
+    misc_modes(r, w);
+    offsets(r, w);
+    transforms(r, w);
+  }
   // 18. motion
   motion(r, w);
   if (r.has(Op::G98) && !r.cycle_in_line) {  // G98 takes the current Z as the travel height
@@ -145,8 +152,8 @@ void Interpreter::execute(const Block& block) {
   }
   // 19. stops and program end
   if (r.has(Op::M0) || r.has(Op::M1)) {
-    auto& c = emitter_.add("@halt_program");
-    Emitter::logical(c, "optional", r.has(Op::M1) && !r.has(Op::M0));
+    emitter_.add("@halt_program");
+    emitter_.logical("optional", r.has(Op::M1) && !r.has(Op::M0));
   }
   w.report_unused([this](std::size_t col, std::string text) { warn(col, std::move(text)); });
   if (r.has(Op::M30)) {

@@ -6,6 +6,7 @@
 #include <bitset>
 #include <cstddef>
 #include <istream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,9 @@ private:
   // One block being executed: its words with ownership and unit conversion (section 2.2, 4.6).
   struct Words;
   struct Resolved;
+  struct ResolvedDeleter {
+    void operator()(Resolved* r) const;
+  };
 
   void execute(const Block& block);
   void finish(std::string_view end_code);
@@ -88,7 +92,7 @@ private:
   void misc_modes(const Resolved& r, Words& w);
   void set_tool_offset(const Axes5& offset);
   void recompute_program_position();
-  Frame frame() const;
+  const Frame& frame() const;  // cached; rebuilt after offsets or transforms change
   Axes5 work_position() const;
 
   // exec_motion.cpp: step 18
@@ -118,6 +122,7 @@ private:
   Compensator compensator_;
   State s_;
   Block block_;
+  std::unique_ptr<Resolved, ResolvedDeleter> resolved_;  // reused for every line
   std::size_t line_ = 0;
   std::size_t executed_ = 0;
   bool started_ = false;
@@ -132,6 +137,8 @@ private:
   };
   std::vector<Loop> loops_;
   bool probe_protected_ = false;
+  mutable Frame frame_;
+  mutable bool frame_dirty_ = true;
   double thread_pitch_ = 0.0;
   std::size_t motion_column_ = 1;  // column of the line's motion code, for errors of modal moves
   std::uint32_t transform_changed_axes_ = 0;  // program axes to program in the next move (section 10.6)

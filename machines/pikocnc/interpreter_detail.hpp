@@ -57,8 +57,22 @@ struct Interpreter::Resolved {
   std::vector<Op> transform_order;
   std::vector<std::pair<std::size_t, std::string>> conflicts;
   mutable bool cycle_in_line = false;
+  std::uint32_t groups = 0;  // bit per Group of the codes in the line
 
   bool has(Op op) const { return ops.test(static_cast<std::size_t>(op)); }
+
+  void reset() {
+    ops.reset();
+    motion = owner = Op::Unknown;
+    owner_words = partial_words = 0;
+    motion_info = nullptr;
+    transform_order.clear();
+    conflicts.clear();
+    cycle_in_line = false;
+    groups = 0;
+  }
+  // Only motion-group codes (G0, G1, ...): the common line, which skips the setting steps.
+  bool only_motion() const { return (groups & ~(1u << static_cast<unsigned>(Group::Motion))) == 0; }
   std::size_t column(Op op) const { return columns[static_cast<std::size_t>(op)]; }
 
   void add(const CodeInfo& info, const CodeWord& cw) {
@@ -67,6 +81,7 @@ struct Interpreter::Resolved {
       conflicts.emplace_back(cw.column, fmt::format("{}{} given twice in one line", cw.letter, cw.number));
     ops.set(k);
     columns[k] = cw.column;
+    groups |= 1u << static_cast<unsigned>(info.group);
     if (info.op == Op::Macro) macro = cw;
     if (info.op == Op::G234) tcpc = cw;
     if (info.group == Group::Transform) transform_order.push_back(info.op);

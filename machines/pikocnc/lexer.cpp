@@ -12,9 +12,20 @@ namespace {
 constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                              1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v' || c == '\0'; }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+// Character classes by table: the lexer looks at every byte of every line.
+enum : unsigned char { kOther = 0, kBlank = 1, kDigit = 2, kLetter = 3 };
+struct ClassTable {
+  unsigned char c[256]{};
+  constexpr ClassTable() {
+    for (const char b : {' ', '\t', '\f', '\v', '\0'}) c[static_cast<unsigned char>(b)] = kBlank;
+    for (int i = '0'; i <= '9'; ++i) c[i] = kDigit;
+    for (int i = 'A'; i <= 'Z'; ++i) c[i] = c[i + 32] = kLetter;
+  }
+};
+constexpr ClassTable kClass;
+inline unsigned char class_of(char c) { return kClass.c[static_cast<unsigned char>(c)]; }
+bool is_blank(char c) { return class_of(c) == kBlank; }
+bool is_digit(char c) { return class_of(c) == kDigit; }
 
 // Where a comment starts at `i`: `(`, `'`, `;`, `//`, or the typographic quotes U+2018/U+2019.
 std::size_t comment_start_length(std::string_view s, std::size_t i) {
@@ -43,12 +54,17 @@ struct Number {
   int frac_digits = 0;
   std::uint64_t frac = 0;      // fractional digits as an integer (first 18)
   bool has_sep = false;
-  std::string slow;            // the digits, for numbers too long for the fast path
+  std::string_view text;       // from the first digit or separator to the end of the number
   double value() const {
     double v;
-    if (digits <= 15 && frac_digits <= 22) {
-      v = static_cast<double>(mantissa) / kPow10[frac_digits];
+    if (digits <= 15) {
+      v = static_cast<double>(mantissa) / kPow10[frac_digits];  // exact: both fit a double
     } else {
+      std::string slow;  // long numbers: without the blanks, through the correctly rounding parser
+      for (char c : text)
+        if (is_digit(c)) slow.push_back(c);
+        else if (c == '.' || c == ',') slow.push_back('.');
+      v = 0;
       std::from_chars(slow.data(), slow.data() + slow.size(), v);
     }
     return negative ? -v : v;
@@ -57,7 +73,9 @@ struct Number {
 
 // number = [sign] (digits [sep [digits]] | sep digits), blanks ignored in between.
 std::size_t read_number(std::string_view s, std::size_t i, Number& n) {
-  n = Number{};
+  n.ok = n.negative = n.has_sign = n.has_sep = false;
+  n.int_part = n.mantissa = n.frac = 0;
+  n.digits = n.frac_digits = 0;
   auto skip = [&] {
     while (i < s.size() && is_blank(s[i])) ++i;
   };
@@ -69,6 +87,7 @@ std::size_t read_number(std::string_view s, std::size_t i, Number& n) {
     skip();
   }
   int any = 0;
+  const std::size_t begin = i;
   for (;;) {
     skip();
     if (i >= s.size()) break;
@@ -83,17 +102,16 @@ std::size_t read_number(std::string_view s, std::size_t i, Number& n) {
       } else if (n.digits <= 19) {
         n.int_part = n.mantissa;
       }
-      n.slow.push_back(c);
       ++i;
     } else if ((c == '.' || c == ',') && !n.has_sep) {
       n.has_sep = true;
-      n.slow.push_back('.');
       ++i;
     } else {
       break;
     }
   }
   n.ok = any > 0;
+  n.text = s.substr(begin, i - begin);
   return i;
 }
 
@@ -118,10 +136,12 @@ void lex_line(std::string_view s, std::size_t line_number, Block& out, Diagnosti
   std::size_t i = 0;
   while (i < s.size()) {
     const char c = s[i];
-    if (is_blank(c) || c == '\r') {
+    const unsigned char cls = class_of(c);
+    if (cls == kBlank || c == '\r') {
       ++i;
       continue;
     }
+    if (cls != kLetter) {
     if (std::size_t len = comment_start_length(s, i)) {
       out.has_comment = true;
       out.comment_column = static_cast<std::uint32_t>(i + 1);
@@ -137,7 +157,6 @@ void lex_line(std::string_view s, std::size_t line_number, Block& out, Diagnosti
       out.comment = text;
       break;
     }
-    if (!is_letter(c)) {
       const unsigned char u = static_cast<unsigned char>(c);
       diag.add(line_number, i + 1,
                u >= 0x80 || u < 0x20 ? fmt::format("stray byte 0x{:02X} skipped", u)
