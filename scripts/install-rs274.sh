@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs LinuxCNC's stand-alone G-code interpreter `rs274` (Debian package linuxcnc-uspace) for the
+# PikoCNC cross-check test. Optional: the test skips when rs274 is missing, and CI never needs it.
+set -euo pipefail
+if command -v rs274 >/dev/null 2>&1; then
+  echo "rs274 already installed: $(command -v rs274)"
+  exit 0
+fi
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+if ! apt-cache policy linuxcnc-uspace 2>/dev/null | grep -q "Candidate: [0-9]"; then
+  echo "linuxcnc-uspace is not available from the configured apt sources; the cross-check will be skipped" >&2
+  exit 1
+fi
+$SUDO apt-get install -y --no-install-recommends linuxcnc-uspace
+command -v rs274
