@@ -139,6 +139,7 @@ void Interpreter::misc_modes(const Resolved& r, Words& w) {
         warn(r.column(left ? Op::G41 : Op::G42), fmt::format("no R and no radius for tool {} in the tool table: radius 0", s_.tool));
     }
     if (s_.compensation_radius < 0) warn(w.col('R'), "negative compensation radius");
+    warn(r.column(left ? Op::G41 : Op::G42), "cutter radius compensation is not modelled yet: the programmed path is emitted");
     compensator_.set(left ? 1 : -1, s_.compensation_radius, options_.dialect == Dialect::V2016 ? Plane::XY : s_.plane);
   }
   // 12. tool offsets, MDI only

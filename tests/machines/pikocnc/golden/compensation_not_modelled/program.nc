@@ -1,0 +1,8 @@
+%
+N070 G41 R2.0          ; compensation on
+N080 G0 X26 Y46,35     ; approach the start of machining
+N090 G0 Z1
+N100 G1 Z-3,2 F150     ; plunge and work
+N110 G1 X40
+N160 G0 Z2             ; lift Z
+N150 G40               ; compensation off
