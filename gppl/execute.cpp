@@ -27,7 +27,7 @@ Flow Interpreter::State::run(std::uint32_t procedure, std::uint32_t args_list, s
   }
   scratch_top = first_arg;
   if (trace != nullptr && !in_init && trace_level(procedure) >= 1)
-    trace_enter(proc.name, int(frames.size()), frames.size() == 1 && trace_level(procedure) >= 3);
+    trace_enter(proc.name, int(frames.size()), trace_level(procedure));
   const Flow flow = execute(procedure);
   frames.pop_back();
   stack_top = base;

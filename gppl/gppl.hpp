@@ -124,6 +124,9 @@ public:
   // Name -> slot, resolved once by the host and cached; nullopt when the post never names it.
   std::optional<VariableId> find_variable(std::string_view name) const;
   std::optional<ProcedureId> find_procedure(std::string_view name) const;  // "@line"
+  // find_variable, or else a new variable the post never names: the host may still assign it
+  // (command parameters), and it appears in trace dumps and value(). Same name, same id.
+  VariableId add_variable(std::string_view name);
 
   // Host assignment: converts to the variable's type, sets `change` (or forces it) and active=TRUE.
   // Throws Error on an impossible conversion.

@@ -156,7 +156,7 @@ struct gen_nl : kw_nl {};
 struct gen_col : p::seq<kw_col, ws, open_paren, ws, p::must<expr>, ws, p::must<close_paren>> {};
 struct gen_colrel : p::seq<kw_colrel, ws, open_paren, ws, p::must<expr>, ws, p::must<close_paren>> {};
 struct gen_operand : p::sor<string_literal, num_literal, int_literal, func_call, variable, paren_expr> {};
-struct gen_value : p::seq<gen_operand, p::opt<ws, format_spec>> {};
+struct gen_value : p::seq<p::not_at<p::sor<kw_nb, kw_nl>>, gen_operand, p::opt<ws, format_spec>> {};
 struct close_group : p::one<']'> {};
 struct close_generate : p::one<'}'> {};
 struct gen_group

@@ -49,14 +49,32 @@ std::optional<ProcedureId> Interpreter::find_procedure(std::string_view name) co
   return it->second;
 }
 
+VariableId Interpreter::add_variable(std::string_view name) {
+  if (auto id = find_variable(name)) return *id;
+  State& s = *state_;
+  std::string key = lower(name);
+  if (auto it = s.extra_index.find(key); it != s.extra_index.end()) return it->second;
+  const auto id = VariableId(s.program.globals.size() + s.extra_names.size());
+  s.extra_names.emplace_back(name);
+  s.extra_index.emplace(std::move(key), id);
+  Cell c;
+  c.typed = false;
+  s.globals.push_back(std::move(c));
+  return id;
+}
+
 void Interpreter::assign(VariableId id, const Value& value, ChangeOverride change) {
   State& s = *state_;
-  const GlobalVariable& var = s.program.globals.at(id);
-  Cell& c = s.globals[var.first_cell];
-  const VarRef ref{false, id, var.first_cell, kNone, 0};
+  Cell& c = s.host_cell(id);
+  const bool implicit = id >= s.program.globals.size() || s.program.globals[id].group == Group::Implicit;
   s.current = nullptr;
-  if (var.group == Group::Implicit && c.typed && c.value.type != value.type) c.typed = false;  // re-typed by the host
-  s.assign(c, value, change, &ref);
+  if (implicit && c.typed && c.value.type != value.type) c.typed = false;  // re-typed by the host
+  if (id < s.program.globals.size()) {
+    const VarRef ref{false, id, s.program.globals[id].first_cell, kNone, 0};
+    s.assign(c, value, change, &ref);
+  } else {
+    s.assign(c, value, change, nullptr);
+  }
   if (s.trace != nullptr && s.host_assigned.size() < 10000) s.host_assigned.push_back(id);
 }
 
@@ -79,21 +97,21 @@ void Interpreter::assign_element(VariableId id, std::span<const int> indices, co
 }
 
 void Interpreter::set_active(VariableId id, bool active) {
-  state_->globals[state_->program.globals.at(id).first_cell].active = active;
+  state_->host_cell(id).active = active;
 }
 
 void Interpreter::set_changed(VariableId id, bool changed) {
-  state_->globals[state_->program.globals.at(id).first_cell].changed = changed;
+  state_->host_cell(id).changed = changed;
 }
 
 const Value& Interpreter::value(VariableId id) const {
-  return state_->globals[state_->program.globals.at(id).first_cell].value;
+  return state_->host_cell(id).value;
 }
 
-bool Interpreter::active(VariableId id) const { return state_->globals[state_->program.globals.at(id).first_cell].active; }
+bool Interpreter::active(VariableId id) const { return state_->host_cell(id).active; }
 
 bool Interpreter::changed(VariableId id) const {
-  return state_->globals[state_->program.globals.at(id).first_cell].changed;
+  return state_->host_cell(id).changed;
 }
 
 RunResult Interpreter::start() {
@@ -131,10 +149,7 @@ void Interpreter::trace_unhandled(std::string_view command) {
   if (key.empty() || key.front() != '@') key.insert(key.begin(), '@');
   const auto it = s.command_trace_level.find(key);
   const int level = it != s.command_trace_level.end() ? it->second : s.default_trace_level;
-  if (level >= 1) {
-    s.frames.clear();
-    s.trace_enter(key, 0, level >= 3);
-  }
+  if (level >= 1) s.trace_enter(!command.empty() && command.front() == '@' ? std::string(command) : "@" + std::string(command), 0, level);
   s.host_assigned.clear();
 }
 

@@ -51,6 +51,18 @@ void Interpreter::State::fail_at(SourcePos pos, ErrorCode code, std::string_view
   throw make_error(code, std::move(where), name, detail);
 }
 
+Cell& Interpreter::State::host_cell(VariableId id) {
+  if (id < program.globals.size()) return globals[program.globals[id].first_cell];
+  const std::size_t extra = id - program.globals.size();
+  if (extra >= extra_names.size()) throw std::out_of_range(fmt::format("no variable with id {}", id));
+  return globals[program.global_cells + extra];
+}
+
+const std::string& Interpreter::State::host_name(VariableId id) const {
+  if (id < program.globals.size()) return program.globals[id].name;
+  return extra_names.at(id - program.globals.size());
+}
+
 const std::string& Interpreter::State::variable_name(const VarRef& ref) const {
   if (ref.local) return program.procedures[frames.back().procedure].locals[ref.id].name;
   return program.globals[ref.id].name;

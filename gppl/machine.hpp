@@ -39,7 +39,9 @@ struct Interpreter::State {
   const Program& program;
   OutputSink& sink;
 
-  std::vector<Cell> globals;
+  std::vector<Cell> globals;  // program globals, then the host's extra variables
+  std::vector<std::string> extra_names;  // variables only the host names (add_variable)
+  std::unordered_map<std::string, std::uint32_t> extra_index;
   std::vector<Cell> stack;  // locals of all active procedures
   std::uint32_t stack_top = 0;
   struct Frame {
@@ -74,6 +76,11 @@ struct Interpreter::State {
   std::unordered_map<std::string, int> command_trace_level;  // names without a procedure
   std::vector<std::uint32_t> host_assigned;  // variables the host set since the last call (trace dump)
   std::string trace_remainder;               // a long procedure name's tail, printed on the next line
+  int last_header_level = 0;                 // level of the procedure whose header was written last
+
+  // host-facing variable ids: program globals, then extra variables
+  Cell& host_cell(VariableId id);
+  const std::string& host_name(VariableId id) const;
 
   // machine.cpp: cells, conversions, assignment
   [[noreturn]] void fail(ErrorCode code, std::string_view name = {}, std::string_view detail = {}) const;
@@ -115,7 +122,7 @@ struct Interpreter::State {
   // trace.cpp
   int trace_level(std::uint32_t procedure) const;
   void trace_statement(const std::string& list, std::int64_t level);
-  void trace_enter(std::string_view name, int depth, bool dump);
+  void trace_enter(std::string_view name, int depth, int level);
   void trace_output(std::string_view text);
   void trace_line(std::string text);
 };

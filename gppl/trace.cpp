@@ -2,8 +2,8 @@
 //   (1)@line            ==> xpos:70.000T ypos:-45.4760057628F
 //                       ..> feed:2291.831T
 //                         > N300 G1 X70 Z20.14 F2292
-// Level 1 writes the procedure header, level 2 adds the output lines, levels 3-5 add the
-// parameters the host assigned for the command (host-called procedures only).
+// Level 1 writes the procedure header, level 2 adds the output lines (when they end, under the
+// header written last), levels 3-5 add the parameters the host assigned for the command.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -80,7 +80,9 @@ void Interpreter::State::trace_line(std::string text) {
   *trace << text << '\n';
 }
 
-void Interpreter::State::trace_enter(std::string_view name, int depth, bool dump) {
+void Interpreter::State::trace_enter(std::string_view name, int depth, int level) {
+  last_header_level = level;
+  const bool dump = level >= 3 && depth <= 1;
   std::string header = fmt::format("({}){}", depth, name);
   std::string tail;
   if (header.size() > kHeaderWidth) {
@@ -93,9 +95,8 @@ void Interpreter::State::trace_enter(std::string_view name, int depth, bool dump
   std::string text = header;
   if (dump) {
     for (std::uint32_t id : host_assigned) {
-      const GlobalVariable& var = program.globals[id];
-      const Cell& c = globals[var.first_cell];
-      std::string pair = fmt::format(" {}:{}", var.name, trace_value(c.value, c.changed));
+      const Cell& c = host_cell(id);
+      std::string pair = fmt::format(" {}:{}", host_name(id), trace_value(c.value, c.changed));
       if (text.size() + pair.size() > kWrapColumn && text.size() > kHeaderWidth + 3) {
         trace_line(std::move(text));
         trace_remainder = std::move(tail);
@@ -110,8 +111,9 @@ void Interpreter::State::trace_enter(std::string_view name, int depth, bool dump
   host_assigned.clear();
 }
 
+// A finished line is shown under the header written last (lines are traced when they end).
 void Interpreter::State::trace_output(std::string_view text) {
-  if (frames.empty() || in_init || trace_level(frames.back().procedure) < 2) return;
+  if (in_init || last_header_level < 2) return;
   trace_line(kOutputPrefix + "> " + std::string(text));
 }
 

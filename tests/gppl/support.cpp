@@ -24,7 +24,7 @@ gppl::VariableId Post::id(const std::string& variable) const {
 }
 
 void Post::set(const std::string& variable, const gppl::Value& v, gppl::ChangeOverride change) {
-  run->assign(id(variable), v, change);
+  run->assign(run->add_variable(variable), v, change);
 }
 
 const gppl::Value& Post::get(const std::string& variable) const { return run->value(id(variable)); }
