@@ -57,23 +57,14 @@ std::string error_text(ErrorCode code, std::string_view name) {
   for (const Entry& e : kCatalogue) {
     if (e.code != code) continue;
     if (e.after == nullptr) return e.before;
-    std::string text = e.before;
-    if (!name.empty()) text += fmt::format(" '{}'", name);
-    if (*e.after != '\0') {
-      text += ' ';
-      text += e.after;
-    }
-    return text;
+    const std::string quoted = name.empty() ? std::string() : fmt::format(" '{}'", name);
+    return fmt::format("{}{}{}{}", e.before, quoted, *e.after != '\0' ? " " : "", e.after);
   }
   return "Unknown error";
 }
 
 Error make_error(ErrorCode code, Position where, std::string_view name, std::string_view detail) {
-  std::string text = error_text(code, name);
-  if (!detail.empty()) {
-    text += ": ";
-    text += detail;
-  }
+  const std::string text = detail.empty() ? error_text(code, name) : fmt::format("{}: {}", error_text(code, name), detail);
   return Error(static_cast<int>(code), std::move(where), text);
 }
 

@@ -53,10 +53,13 @@ int operator_count(std::string_view text) {
     }
     if (c == '\'' || c == '"') quote = c;
     else if (c == ';') break;
-    else if (c == '(' || c == '-' || c == '+' || c == '!' || c == '^' || c == '<') ++count;
-    else if ((c == 'n' || c == 'N') && (i == 0 || !is_word(text[i - 1])) && i + 2 < text.size() &&
-             iequal(text.substr(i, 3), "not"))
-      ++count;
+    else if (c == '(' || c == '-' || c == '+' || c == '!' || c == '^' || c == '<' || c == '*' || c == '/') ++count;
+    else if (is_word(c) && (i == 0 || !is_word(text[i - 1]))) {
+      std::size_t n = i;
+      while (n < text.size() && is_word(text[n])) ++n;
+      const std::string_view word = text.substr(i, n - i);
+      if (iequal(word, "not") || iequal(word, "and") || iequal(word, "or")) ++count;
+    }
   }
   return count;
 }

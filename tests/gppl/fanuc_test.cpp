@@ -2,6 +2,8 @@
 // procedures write the exact lines GPPL semantics give for hand-set command parameters.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "support.hpp"
 
 using namespace gppl_test;
@@ -184,6 +186,26 @@ TEST_F(Fanuc, RelativeModeContinuesNextBlock) {
   post.call("@halt_program");
   post.run->finish();
   EXPECT_EQ(take(), "G91 G0 X1. Y2. Z3.\nG90  M0\n");
+}
+
+}  // namespace
+
+namespace {
+
+// Every post the project ships (machines/) and every golden post compiles without error.
+TEST(ShippedPosts, Compile) {
+  std::vector<std::filesystem::path> posts;
+  for (const char* root : {"../machines", "golden"})
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root))
+      if (entry.path().extension() == ".gpp") posts.push_back(entry.path());
+  EXPECT_FALSE(posts.empty());
+  for (const auto& post : posts) {
+    try {
+      gppl::compile_file(post.string(), {});
+    } catch (const gppl::Errors& e) {
+      ADD_FAILURE() << e.what();
+    }
+  }
 }
 
 }  // namespace
