@@ -53,6 +53,10 @@ std::string Arguments::value(std::string_view option, std::string_view fallback)
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> all = {
       read_command(),
+      run_command(),
+      check_command(),
+      test_command(),
+      explain_command(),
       plot_command(),
   };
   return all;

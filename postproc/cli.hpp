@@ -59,6 +59,10 @@ int main(std::span<const std::string> args, std::ostream& out, std::ostream& err
 
 // The subcommands, one per file (cmd_*.cpp).
 Subcommand read_command();
+Subcommand run_command();
+Subcommand check_command();
+Subcommand test_command();
+Subcommand explain_command();
 Subcommand plot_command();
 
 }  // namespace postproc::cli
