@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <ostream>
+#include <sstream>
 
 #include "gppl/gppl.hpp"
 #include "postproc/cli.hpp"
@@ -60,12 +61,18 @@ int run_check(const Arguments& args, std::ostream& out, std::ostream&) {
   if (units_word != "metric" && units_word != "inch") throw UsageError{"--units must be metric or inch"};
   auto units = units_word == "inch" ? prp::Units::Inch : prp::Units::Metric;
 
-  prp::MachineParameters machine;  // the PRP whose external variables a post may use
+  // The PRP whose external variables the posts may use: --prp, or the first .prp among the files.
+  std::string machine_file = args.value("--prp");
+  for (const auto& path : args.positional())
+    if (machine_file.empty() && is_prp(path)) machine_file = path;
+  prp::MachineParameters machine;
   std::size_t errors = 0;
-  if (args.has("--prp")) {
-    std::size_t n = check_prp(args.value("--prp"), units, out);
-    errors += n;
-    if (n == 0) machine = prp::load_file(args.value("--prp"), units);
+  if (!machine_file.empty()) {
+    std::ostringstream ignored;  // reported below when it is one of the files, or here
+    if (check_prp(machine_file, units, args.has("--prp") ? out : ignored) == 0)
+      machine = prp::load_file(machine_file, units);
+    else if (args.has("--prp"))
+      ++errors;
   }
   for (const auto& path : args.positional()) {
     std::size_t n = is_prp(path) ? check_prp(path, units, out) : check_gpp(path, machine, args, out);
@@ -83,7 +90,7 @@ Subcommand check_command() {
       "postproc check [--prp P.prp] FILE.gpp|FILE.prp...",
       "Check posts and PRP files without running them; print every error with its position.",
       {
-          {"--prp", "", true, "the PRP whose external variables the posts may use (checked too)"},
+          {"--prp", "", true, "the PRP whose external variables the posts may use (default: the first .prp given)"},
           {"--include", "-I", true, "a folder where `inc` files are looked up"},
           {"--units", "", true, "metric (default) or inch"},
           {"--quiet", "-q", false, "print only the errors"},

@@ -56,10 +56,17 @@ public:
     bool maybe_directive = first != std::string_view::npos && line[first] == '!';
     std::optional<Directive> directive = maybe_directive ? parse_directive(line) : std::nullopt;
     if (observer_) {
+      // The line was started by the command that flushed the line before it (nb and nl flush the
+      // open line and open the next one), unless this command already flushed one.
+      bool own = wrote_in_command_;
       file_name_ = files_.current_name();
       LineEvent e{file_name_, line, directive.has_value(), files_.current_is_main(),
-                  {command_index, command_name, origin.procedure, origin.source_line}};
+                  {own ? command_index : opener_index_, own ? command_name : std::string_view(opener_name_),
+                   origin.procedure, origin.source_line}};
       observer_->on_line(e);
+      opener_index_ = command_index;
+      opener_name_ = command_name;
+      wrote_in_command_ = true;
     }
     if (directive) {
       files_.execute(*directive);
@@ -69,11 +76,31 @@ public:
     }
   }
 
+  // Called when a command starts (lines are attributed to the command that started them).
+  void begin_command(std::size_t index, std::string_view name) {
+    command_index = index;
+    command_name = name;
+    wrote_in_command_ = false;
+    if (opener_name_.empty()) {
+      opener_index_ = index;
+      opener_name_ = name;
+    }
+  }
+
+  // After the last command: the lines still open belong to the command that started them.
+  void end_commands() {
+    command_name = {};
+    wrote_in_command_ = false;
+  }
+
   std::size_t command_index = 0;
   std::string_view command_name;
   std::size_t lines = 0;
 
 private:
+  bool wrote_in_command_ = false;
+  std::size_t opener_index_ = 0;
+  std::string opener_name_;
   OutputFiles& files_;
   LineObserver* observer_;
   std::string file_name_;
@@ -127,14 +154,13 @@ public:
     std::string previous;
     while (lookahead.next(command)) {
       ++summary.commands;
-      sink_.command_index = command.index;
-      sink_.command_name = command.name;
+      sink_.begin_command(command.index, command.name);
       const toolpath::Command* next = lookahead.peek();
       guarded([&] { execute(command, previous, next ? std::string_view(next->name) : std::string_view{}, summary); });
       previous = command.name;
       if (options_.progress && (summary.commands & 4095) == 0) options_.progress(summary.commands);
     }
-    sink_.command_name = {};
+    sink_.end_commands();
     guarded([&] { interpreter_.finish(); });
     if (files_.main_path().empty()) name_main_file(default_main_name(input_stem(), engine_.file_extension()));
     summary.lines = sink_.lines;
@@ -250,7 +276,7 @@ private:
       procedure = procedures_.emplace(command.name, interpreter_.find_procedure(command.name)).first;
     if (!procedure->second) {
       ++summary.skipped;
-      if (options_.trace) *options_.trace << "(0)" << command.name << '\n';
+      interpreter_.trace_unhandled(command.name);
     } else if (interpreter_.call(*procedure->second) == gppl::RunResult::Abort) {
       throw std::runtime_error("the post stopped the run (`abort` in " + command.name + ")");
     }

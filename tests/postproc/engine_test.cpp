@@ -1,0 +1,106 @@
+// The engine on small posts: parameters and change flags, command names, skipped commands,
+// output directives, errors naming the command, and output left untouched by a failed run.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "postproc/engine.hpp"
+#include "toolpath/trace_reader.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class EngineTest : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("postproc-engine-test-" + std::to_string(::getpid()) + "-" +
+                                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+
+  // Posts `trace` with `post`; returns the main program (stream output) or throws.
+  std::string post(const std::string& gpp, const std::string& trace) {
+    std::ofstream(dir / "p.gpp") << gpp;
+    postproc::EngineOptions engine_options;
+    engine_options.post = (dir / "p.gpp").string();
+    postproc::Engine engine(engine_options);
+    std::istringstream in(trace);
+    toolpath::TraceReader reader(in, "job.trace");
+    postproc::OutputFiles files(dir, postproc::OutputFiles::LineEnd::LF, true);
+    postproc::RunOptions options;
+    options.input_name = "job.trace";
+    engine.run(reader, files, options);
+    std::ostringstream out;
+    files.commit_to(out);
+    return out.str();
+  }
+
+  fs::path dir;
+};
+
+TEST_F(EngineTest, ParametersChangeFlagsAndCommandNames) {
+  const std::string gpp =
+      "@init_post\n  xpos_f = '5.3'\n  ypos_f = '5.3'\nendp\n"
+      "@line\n  {nl, prev_command, ' ', current_command, ' ', next_command, [' X'xpos], [' Y'ypos]}\nendp\n";
+  const std::string trace =
+      "@start_of_file\n"
+      "@line\nxpos : 1\nypos : 2\n"
+      "@line\nxpos : 1\nypos : 3\n"
+      "@line\nxpos : 1T\nypos : 4F\n"
+      "@tmatrix\n"
+      "@line\nxpos : 5\nypos : 4\n";
+  EXPECT_EQ(post(gpp, trace),
+            "@start_of_file @line @line X1. Y2.\n"
+            "@line @line @line Y3.\n"
+            "@line @line @tmatrix X1.\n"
+            "@tmatrix @line  X5.\n");
+}
+
+TEST_F(EngineTest, DirectivesSplitTheOutput) {
+  const std::string gpp =
+      "@start_of_file\n  {'%'}\nendp\n"
+      "@proc\n  {nl, '!!open file=O', label, '.SPF!!'}\n  {nl, 'O', label}\nendp\n"
+      "@end_proc\n  {nl, 'M99'}\n  {nl, '!! close file = O', label, '.SPF !!'}\nendp\n"
+      "@end_of_file\n  {nl, '!!copy file=O1.SPF!!'}\n  {nl, 'M30'}\nendp\n";
+  const std::string trace =
+      "@start_of_file\ng_file_name : 'MAIN.NC'\n"
+      "@proc\nlabel : 1\n@end_proc\n@proc\nlabel : 2\n@end_proc\n@proc\nlabel : 1\n@end_proc\n"
+      "@end_of_file\n";
+  EXPECT_EQ(post(gpp, trace),
+            "==> MAIN.NC <==\n%\nO1\nM99\nO1\nM99\nM30\n\n"
+            "==> O1.SPF <==\nO1\nM99\nO1\nM99\n\n"
+            "==> O2.SPF <==\nO2\nM99\n");
+}
+
+TEST_F(EngineTest, ErrorsNameTheCommandAndLeaveOldFilesAlone) {
+  std::ofstream(dir / "OUT.NC") << "old\n";
+  std::ofstream(dir / "p.gpp") << "@line\n  {nl, 'x'}\n  gcode = 1 / 0\nendp\n";
+  postproc::EngineOptions engine_options;
+  engine_options.post = (dir / "p.gpp").string();
+  postproc::Engine engine(engine_options);
+  std::istringstream in("@start_of_file\ng_file_name : 'OUT.NC'\n@rapid_move\n@line\n");
+  toolpath::TraceReader reader(in, "job.trace");
+  postproc::OutputFiles files(dir);
+  postproc::RunOptions options;
+  options.input_name = "job.trace";
+  options.main_path = [&](const std::string& name) { return dir / name; };
+  try {
+    engine.run(reader, files, options);
+    ADD_FAILURE() << "no error";
+  } catch (const postproc::RunError& e) {
+    EXPECT_EQ(std::string(e.what()), "job.trace: command #2 @line: " + (dir / "p.gpp").string() +
+                                         ":3:13: error 407: Zero divide");
+  }
+  std::ifstream old(dir / "OUT.NC");
+  std::string first;
+  std::getline(old, first);
+  EXPECT_EQ(first, "old");
+}
+
+}  // namespace
