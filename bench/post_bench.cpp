@@ -73,7 +73,10 @@ int main(int argc, char** argv) {
   double read_s = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  postproc::Engine engine({.post = post, .prp = prp});
+  postproc::EngineOptions engine_options;
+  engine_options.post = post;
+  engine_options.prp = prp;
+  postproc::Engine engine(engine_options);
   auto reader = toolpath::TraceReader::open(job);
   postproc::OutputFiles files(work);
   postproc::RunOptions options;
