@@ -136,6 +136,10 @@ public:
                       ChangeOverride change = ChangeOverride::Compute);
   void set_active(VariableId id, bool active);
   void set_changed(VariableId id, bool changed);
+  // Forgets every assignment so far: the next assignment of any non-local variable counts as a
+  // first one (change TRUE even when the value repeats). The engine calls it where a subroutine
+  // body starts, so that modal output starts afresh there (docs/engine.md, "modal memory").
+  void reset_change_memory();
   const Value& value(VariableId id) const;
   bool active(VariableId id) const;
   bool changed(VariableId id) const;

@@ -104,6 +104,10 @@ void Interpreter::set_changed(VariableId id, bool changed) {
   state_->host_cell(id).changed = changed;
 }
 
+void Interpreter::reset_change_memory() {
+  for (auto& cell : state_->globals) cell.assigned = false;
+}
+
 const Value& Interpreter::value(VariableId id) const {
   return state_->host_cell(id).value;
 }

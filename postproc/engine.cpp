@@ -33,14 +33,6 @@ private:
   toolpath::CommandSource& inner_;
 };
 
-// Forgets, for every variable, the value its next assignment is compared with. gppl.hpp does not
-// offer this yet (requested from gppl: `Interpreter::reset_change_memory()`); until it does, the
-// reset is a no-op and docs/engine.md says so.
-template <class Interp>
-void reset_change_memory(Interp& interpreter) {
-  if constexpr (requires { interpreter.reset_change_memory(); }) interpreter.reset_change_memory();
-}
-
 struct TransparentHash {
   using is_transparent = void;
   std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
@@ -260,7 +252,7 @@ private:
     structure_.before(command);
     if (iequals(command.name, "@start_of_file")) start_of_file(command);
     bool reset = engine_.options().reset_modal_memory_at_subroutines;
-    if (reset && ProgramStructure::starts_body(command)) reset_change_memory(interpreter_);
+    if (reset && ProgramStructure::starts_body(command)) interpreter_.reset_change_memory();
 
     for (const auto& p : command.parameters) {
       const Slot& s = slot(p.name);
@@ -280,7 +272,7 @@ private:
     } else if (interpreter_.call(*procedure->second) == gppl::RunResult::Abort) {
       throw std::runtime_error("the post stopped the run (`abort` in " + command.name + ")");
     }
-    if (reset && ProgramStructure::calls_subroutine(command)) reset_change_memory(interpreter_);
+    if (reset && ProgramStructure::calls_subroutine(command)) interpreter_.reset_change_memory();
   }
 
   // Names the main file, and completes the subroutine numbers the stream left out.
@@ -332,7 +324,7 @@ private:
 }  // namespace
 
 Engine::Engine(EngineOptions options) : options_(std::move(options)) {
-  if (!options_.prp.empty()) prp_ = prp::load_file(options_.prp, options_.units);
+  prp_ = options_.prp.empty() ? prp::defaults(options_.units) : prp::load_file(options_.prp, options_.units);
   Enumerations enums(drill_cycle_names());
   gppl::CompileOptions compile;
   compile.host_variables = host_variables(enums, prp_);

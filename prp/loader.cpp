@@ -378,6 +378,10 @@ MachineParameters load_source(std::string_view text, const std::string& file_nam
   return Loader(file_name, units).run(text);
 }
 
+MachineParameters defaults(Units units) {
+  return load_source("@pre_processor\nendp\n", "(engine defaults)", units);
+}
+
 MachineParameters load_file(const std::string& path, Units units) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw toolpath::InputError({path, 0, 0}, "cannot open the PRP file");

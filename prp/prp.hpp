@@ -172,6 +172,8 @@ private:
 // toolpath::InputError when the file cannot be read.
 MachineParameters load_file(const std::string& path, Units units);
 MachineParameters load_source(std::string_view text, const std::string& file_name, Units units);
+// The parameters of a machine whose PRP sets nothing: every key at its engine default (spec 3.0).
+MachineParameters defaults(Units units);
 
 // Canonical PRP text of one value (`Y`/`N` for logicals, shortest exact numbers, `m, i` pairs) and
 // of a whole parameter set: loading the written text gives the same parameters, records and
