@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The main job on the bundled example: set up, build, and read the sample job.
-# (Posting through the Fanuc post arrives with the engine; until then this prints the stream summary.)
+# The main job on the bundled example: set up, build, and post the sample job through the shipped
+# Fanuc post; the NC program is printed on stdout.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/bootstrap.sh Debug
-build/bin/postproc read --summary docs/examples/sample-job.trace
+build/bin/postproc run --post machines/fanuc/fanuc.gpp --prp machines/fanuc/fanuc.prp docs/examples/sample-job.trace
