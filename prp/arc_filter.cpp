@@ -46,12 +46,15 @@ bool ArcFilter::next(toolpath::Command& out) {
   if (out.is_stream_command() && is(out, "@arc")) {
     plan(out);
     if (pieces_ > 0) {
+      sets_.prepare(out, arc_, history_);
+      history_.observe(out);
       std::swap(original_, out);
       emit(out);
       return true;
     }
   }
   position_.update(out);
+  history_.observe(out);
   return true;
 }
 
@@ -141,6 +144,7 @@ void ArcFilter::emit(toolpath::Command& out) {
   const bool as_line = chords_ > 0 || piece.sweep < settings_.eps_angle || piece.length() < settings_.min_length;
   if (as_line) {
     make_motion(out, "@line", original_, piece.end, number(original_, "feed"));
+    sets_.write_vertex(out, piece.end, last);
   } else {
     out = original_;
     out.trace.clear();
@@ -152,6 +156,7 @@ void ArcFilter::emit(toolpath::Command& out) {
     set_number(out, "end_angle", piece.end_angle());
     set_number(out, "arc_size", piece.sweep);
     if (out.find("zstart")) set_number(out, "zstart", piece.start.z());
+    sets_.write_piece(out, piece, i == 0, last);
   }
   if (last) out.trace = original_.trace;  // the original post's output belongs to the whole arc
   position_.update(out);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "prp/kinematic_sets.hpp"
 #include "prp/motion.hpp"
 #include "prp/prp.hpp"
 #include "toolpath/geometry.hpp"
@@ -44,6 +45,8 @@ private:
   ArcSettings settings_;
   WarningSink warn_;
   ToolPosition position_;
+  SetHistory history_;          // recent points of the kinematic sets
+  ArcSets sets_;                // how the arc being replaced maps to each kinematic set
   toolpath::Command original_;  // the arc being replaced
   toolpath::geometry::Arc arc_;
   std::vector<double> cuts_;    // piece boundaries as offsets from the start, 0 .. sweep
