@@ -3,8 +3,13 @@
 #include <vector>
 
 #include "prp/arc_filter.hpp"
+#include "prp/compensation_check.hpp"
 #include "prp/drill_expansion.hpp"
+#include "prp/full_coordinates.hpp"
+#include "prp/init_cpos.hpp"
+#include "prp/mode_commands.hpp"
 #include "prp/precision_filter.hpp"
+#include "prp/procedure_generation.hpp"
 #include "prp/prp.hpp"
 #include "prp/short_line_filter.hpp"
 #include "prp/structure_check.hpp"
@@ -36,10 +41,16 @@ std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParamet
   auto chain = std::make_unique<Chain>(input);
   chain->add<StructureCheck>(params, warn);
   if (DrillExpansion::needed(params)) chain->add<DrillExpansion>(params, warn);
+  if (!ModeCommands::wanted(params).empty()) chain->add<ModeCommands>(params, warn);
+  if (params.logical("init_cpos")) chain->add<InitCpos>();
+  // After the filters that add commands to inline jobs, so that those commands travel with their job.
+  if (ProcedureGeneration::needed(params)) chain->add<ProcedureGeneration>(params);
   if (params.has("dflt_start") || params.has("dflt_end")) chain->add<DefaultPositions>(params);
+  if (CompensationCheck::needed(params)) chain->add<CompensationCheck>(params.numeric("min_delt_arc_rad"), warn);
   if (params.numeric("eps_line") > 0) chain->add<ShortLineFilter>(params.numeric("eps_line"));
   if (auto arcs = ArcSettings::from(params); !arcs.passes_everything()) chain->add<ArcFilter>(arcs, warn);
   if (auto precision = PrecisionSettings::from(params); !precision.does_nothing()) chain->add<PrecisionFilter>(precision);
+  if (params.logical("full_gcode")) chain->add<FullCoordinates>();
   return chain;
 }
 

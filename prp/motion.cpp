@@ -27,6 +27,15 @@ bool is_feed_motion(const toolpath::Command& c) {
                                    is(c, "@arc_5x"));
 }
 
+bool is_motion_block(const toolpath::Command& c) {
+  if (!c.is_stream_command()) return false;
+  for (std::string_view n : {"@rapid_move", "@line", "@arc", "@line_on", "@move_5x", "@line_5x", "@arc_5x", "@move_4x",
+                             "@line_4x", "@move4x_cartesian", "@move4x_polar", "@move4x_dir", "@line4x_cartesian",
+                             "@line4x_polar", "@line4x_dir", "@arc4x_cartesian", "@arc4x_polar", "@drill"})
+    if (is(c, n)) return true;
+  return false;
+}
+
 std::optional<double> number(const toolpath::Command& c, std::string_view name) {
   const toolpath::Value* v = c.find(name);
   if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return std::nullopt;

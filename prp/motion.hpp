@@ -16,6 +16,8 @@ bool is(const toolpath::Command& c, std::string_view name);
 // Commands whose xpos/ypos/zpos is where the tool is afterwards.
 bool moves_tool(const toolpath::Command& c);
 bool is_feed_motion(const toolpath::Command& c);  // @line, @arc, @line_on, ...
+// A command that moves the machine: 3-, 4- and 5-axis moves and arcs, and @drill (its first hole).
+bool is_motion_block(const toolpath::Command& c);
 
 std::optional<double> number(const toolpath::Command& c, std::string_view name);
 void set_number(toolpath::Command& c, std::string_view name, double v);

@@ -31,8 +31,12 @@ TEST(FilterChain, SolidCamFanucTracePassesThrough) {
       }
     }
   }
-  // The example's post generates subroutines although its PRP says gen_procs = N: reported once.
-  EXPECT_EQ(warnings, std::vector<std::string>{"@call_proc: @call_proc although the PRP says gen_procs = N"});
+  // The example's post generates subroutines although its PRP says gen_procs = N, and its PRP says
+  // the control starts incremental (abs_coord = N) but the trace sends no @absolute_mode: each
+  // reported once, nothing restructured.
+  EXPECT_EQ(warnings, (std::vector<std::string>{"@call_proc: @call_proc although the PRP says gen_procs = N",
+                                                "@rapid_move: the PRP says abs_coord = N but the toolpath sends no "
+                                                "@absolute_mode before its first motion"}));
 }
 
 TEST(FilterChain, LinearisesArcsForAMachineWithoutThem) {
