@@ -34,6 +34,12 @@ void mix(std::uint64_t& hash, double v) {
   }
 }
 
+// A procedure body runs after the main program has changed to later tools, so its @start_of_job
+// names the job's own tool (a parameter @start_of_job has, gpptool 6.1) when the toolpath left it out.
+void add_tool_number(toolpath::Command& start, const auto& job) {
+  if (job.tool_number && !start.find("tool_number")) start.set("tool_number", *job.tool_number);
+}
+
 }  // namespace
 
 bool ProcedureGeneration::needed(const MachineParameters& params) {
@@ -106,6 +112,7 @@ bool ProcedureGeneration::collect() {
     if (!c.is_stream_command()) continue;
     if (leading && is_tool_change(c)) {
       ++job.tools;
+      if (const toolpath::Value* t = c.find("tool_number"); t && !job.tool_number) job.tool_number = *t;
       continue;
     }
     leading = false;
@@ -223,6 +230,7 @@ bool ProcedureGeneration::next_main(toolpath::Command& out) {
     }
     toolpath::Command start;
     bodies_->read(start);
+    add_tool_number(start, job);
     for (int i = 0; i < job.tools; ++i) {
       queue_.emplace_back();
       bodies_->read(queue_.back());
@@ -303,6 +311,7 @@ bool ProcedureGeneration::next_body(toolpath::Command& out) {
     if (!out.is_stream_command()) return true;
     if (skip_tools_ < 0) {  // the job's @start_of_job opens the body; its tool changes were sent in main
       skip_tools_ = job.tools;
+      add_tool_number(out, job);
       return true;
     }
     if (skip_tools_ > 0) {
