@@ -19,6 +19,10 @@ ArcSettings ArcSettings::from(const MachineParameters& p) {
   s.quadrants = p.logical("arc_quadrants");
   s.gt_180 = p.logical("arc_gt_180");
   s.zx_yz = p.logical("arc_zx_yz");
+  s.arc_5x = p.logical("arc_5x");
+  // The engine default of arc_in_main_planes (Y) must not change a stream, so only a PRP that says
+  // it (or pos_to_coord = Y) makes tilted machine-plane arcs into chords.
+  s.main_planes = (p.has("arc_in_main_planes") && p.logical("arc_in_main_planes")) || p.logical("pos_to_coord");
   s.machine_plane = toolpath::geometry::parse_plane(p.text("machine_plane")).value_or(Plane::XY);
   if (p.has("arc_max_radius")) s.max_radius = p.numeric("arc_max_radius");
   s.max_angle = p.numeric("arc_max_angle");
@@ -31,7 +35,8 @@ ArcSettings ArcSettings::from(const MachineParameters& p) {
 }
 
 bool ArcSettings::passes_everything() const {
-  return arc_exist && arc_3d && !quadrants && gt_180 && zx_yz && !max_radius && min_length <= 0 && eps_angle <= 0;
+  return arc_exist && arc_3d && !quadrants && gt_180 && zx_yz && arc_5x && !main_planes && !max_radius &&
+         min_length <= 0 && eps_angle <= 0;
 }
 
 ArcFilter::ArcFilter(toolpath::CommandSource& input, ArcSettings settings, WarningSink warn)
@@ -43,7 +48,7 @@ bool ArcFilter::next(toolpath::Command& out) {
     return true;
   }
   if (!input_.next(out)) return false;
-  if (out.is_stream_command() && is(out, "@arc")) {
+  if (out.is_stream_command() && (is(out, "@arc") || is(out, "@arc_5x"))) {
     plan(out);
     if (pieces_ > 0) {
       sets_.prepare(out, arc_, history_);
@@ -53,15 +58,27 @@ bool ArcFilter::next(toolpath::Command& out) {
       return true;
     }
   }
+  track(out);
+  return true;
+}
+
+void ArcFilter::track(const toolpath::Command& out) {
   position_.update(out);
   history_.observe(out);
-  return true;
+  if (!out.is_stream_command()) return;
+  if (auto a = number(out, "apos")) apos_ = a;
+  if (auto b = number(out, "bpos")) bpos_ = b;
 }
 
 // Decides what replaces the arc (spec 3.2 process_arc); pieces_ stays 0 when it passes unchanged.
 void ArcFilter::plan(const toolpath::Command& c) {
   piece_ = pieces_ = chords_ = 0;
   cuts_.clear();
+  five_axis_ = is(c, "@arc_5x");
+  rotary_from_[0] = apos_;
+  rotary_from_[1] = bpos_;
+  rotary_to_[0] = number(c, "apos");
+  rotary_to_[1] = number(c, "bpos");
 
   Plane plane = Plane::XY;
   if (const toolpath::Value* v = c.find("arc_plane")) {
@@ -113,8 +130,10 @@ void ArcFilter::plan(const toolpath::Command& c) {
     chords_ = pieces_ = 1;  // one straight line to the end
     return;
   }
+  bool tilted = false;  // in the machine's axes the arc lies in none of XY, YZ, ZX
+  if (const toolpath::Value* m = c.find("arc_plane_m")) tilted = !toolpath::geometry::parse_plane(m->text);
   if (!s.arc_exist || (helical && !s.arc_3d) || (!in_machine_plane && !s.zx_yz) ||
-      (s.max_radius && arc_.radius > *s.max_radius)) {
+      (s.max_radius && arc_.radius > *s.max_radius) || (five_axis_ && !s.arc_5x) || (tilted && s.main_planes)) {
     chords_ = pieces_ = toolpath::geometry::chord_count(arc_, s.max_angle, s.max_chord);
     if (settings_.limits_defaulted && warn_) {
       warn_(c, "arcs are linearised but the PRP sets neither arc_max_angle nor arc_max_chord: using 10 degrees "
@@ -139,11 +158,12 @@ void ArcFilter::plan(const toolpath::Command& c) {
 void ArcFilter::emit(toolpath::Command& out) {
   const int i = piece_++;
   const bool last = piece_ == pieces_;
-  const Arc piece = chords_ > 0 ? arc_.piece(arc_.sweep * i / chords_, last ? arc_.sweep : arc_.sweep * (i + 1) / chords_)
-                                : arc_.piece(cuts_[static_cast<std::size_t>(i)], cuts_[static_cast<std::size_t>(i) + 1]);
+  const double to = chords_ > 0 ? (last ? arc_.sweep : arc_.sweep * (i + 1) / chords_)
+                                : cuts_[static_cast<std::size_t>(i) + 1];
+  const Arc piece = arc_.piece(chords_ > 0 ? arc_.sweep * i / chords_ : cuts_[static_cast<std::size_t>(i)], to);
   const bool as_line = chords_ > 0 || piece.sweep < settings_.eps_angle || piece.length() < settings_.min_length;
   if (as_line) {
-    make_motion(out, "@line", original_, piece.end, number(original_, "feed"));
+    make_motion(out, five_axis_ ? "@line_5x" : "@line", original_, piece.end, number(original_, "feed"));
     sets_.write_vertex(out, piece.end, last);
   } else {
     out = original_;
@@ -158,8 +178,18 @@ void ArcFilter::emit(toolpath::Command& out) {
     if (out.find("zstart")) set_number(out, "zstart", piece.start.z());
     sets_.write_piece(out, piece, i == 0, last);
   }
+  if (five_axis_) {
+    // The rotary axes turn in step with the arc angle, from where the previous command left them.
+    static constexpr std::string_view names[] = {"apos", "bpos"};
+    for (int k = 0; k < 2; ++k) {
+      const auto& from = rotary_from_[k];
+      const auto& end = rotary_to_[k];
+      if (!end) continue;
+      set_number(out, names[k], last || !from ? *end : *from + (*end - *from) * (to / arc_.sweep));
+    }
+  }
   if (last) out.trace = original_.trace;  // the original post's output belongs to the whole arc
-  position_.update(out);
+  track(out);
 }
 
 }  // namespace prp

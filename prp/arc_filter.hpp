@@ -18,6 +18,9 @@ struct ArcSettings {
   bool quadrants = false;     // Y: cut at every multiple of 90 degrees
   bool gt_180 = true;         // N: arcs over 180 degrees are halved
   bool zx_yz = true;          // N: arcs outside the machine plane become chords
+  bool arc_5x = true;         // N: @arc_5x (an arc while the rotary axes turn) becomes @line_5x chords
+  bool main_planes = false;   // arc_in_main_planes = Y set in the PRP (or pos_to_coord = Y): an arc
+                              // whose machine plane (arc_plane_m) is none of XY, YZ, ZX becomes chords
   toolpath::geometry::Plane machine_plane = toolpath::geometry::Plane::XY;
   std::optional<double> max_radius;  // larger arcs become chords
   double max_angle = 10.0;    // chord limits when linearising
@@ -40,6 +43,7 @@ public:
 private:
   void plan(const toolpath::Command& arc);
   void emit(toolpath::Command& out);
+  void track(const toolpath::Command& out);
 
   toolpath::CommandSource& input_;
   ArcSettings settings_;
@@ -47,6 +51,9 @@ private:
   ToolPosition position_;
   SetHistory history_;          // recent points of the kinematic sets
   ArcSets sets_;                // how the arc being replaced maps to each kinematic set
+  std::optional<double> apos_, bpos_;  // rotary angles of the last command that gave them
+  bool five_axis_ = false;      // the arc being replaced is an @arc_5x
+  std::optional<double> rotary_from_[2], rotary_to_[2];  // apos, bpos at its start and end
   toolpath::Command original_;  // the arc being replaced
   toolpath::geometry::Arc arc_;
   std::vector<double> cuts_;    // piece boundaries as offsets from the start, 0 .. sweep
