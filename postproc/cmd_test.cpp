@@ -4,6 +4,7 @@
 #include <ostream>
 
 #include "postproc/cli.hpp"
+#include "postproc/directive.hpp"
 #include "postproc/cli_support.hpp"
 #include "postproc/regression.hpp"
 
@@ -22,7 +23,10 @@ public:
       comparer_.produced(trace_name_, e.text, e.origin);
       return;
     }
-    if (e.directive) return;  // executed, never written
+    if (e.directive) {  // executed, never written; a file the run deletes is not left "not compared"
+      if (auto d = parse_directive(e.text); d && d->verb == Directive::Verb::Delete) comparer_.discarded(d->name);
+      return;
+    }
     if (mode_ == Mode::File && !e.main_file) {
       comparer_.produced(std::string(e.file), e.text, e.origin);  // reported as not compared
       return;

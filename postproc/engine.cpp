@@ -61,7 +61,18 @@ public:
       wrote_in_command_ = true;
     }
     if (directive) {
-      files_.execute(*directive);
+      if (observer_ && directive->verb == Directive::Verb::Copy) {
+        // The copied text becomes lines of the current file, attributed to the command that copies.
+        LineEvent copied{file_name_, {}, false, files_.current_is_main(),
+                         {command_index, command_name, origin.procedure, origin.source_line}};
+        files_.execute(*directive, [&](std::string_view text) {
+          copied.text = text;
+          observer_->on_line(copied);
+          ++lines;
+        });
+      } else {
+        files_.execute(*directive);
+      }
     } else {
       files_.write_line(line);
       ++lines;
@@ -251,6 +262,7 @@ private:
   void execute(toolpath::Command& command, std::string_view previous, std::string_view next, RunSummary& summary) {
     structure_.before(command);
     if (iequals(command.name, "@start_of_file")) start_of_file(command);
+    if (options_.posted) options_.posted(command);
     bool reset = engine_.options().reset_modal_memory_at_subroutines;
     if (reset && ProgramStructure::starts_body(command)) interpreter_.reset_change_memory();
 

@@ -67,6 +67,9 @@ struct RunOptions {
   LineObserver* observer = nullptr;
   std::ostream* trace = nullptr;  // the post's `trace` output and the commands skipped
   std::function<void(std::size_t commands)> progress;  // called every 4096 commands
+  // Called with each command as its procedure is about to run: after the PRP filters and with the
+  // structure the engine completes (`postproc verify` models the motion from these).
+  std::function<void(const toolpath::Command& command)> posted;
   // Reopens the input from its start, for the one case where the engine must look ahead over the
   // whole stream: a @start_of_file without `first_user_proc` (docs/engine.md). May be empty.
   std::function<std::unique_ptr<toolpath::CommandSource>()> reopen;

@@ -18,6 +18,22 @@ namespace {
 
 constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
+// Hands each complete line of `chunk` (LF or CR LF ends) to `line`; an unfinished one stays in `partial`.
+void split_lines(std::string_view chunk, std::string& partial, const OutputFiles::LineCallback& line) {
+  for (;;) {
+    std::size_t end = chunk.find('\n');
+    if (end == std::string_view::npos) {
+      partial.append(chunk);
+      return;
+    }
+    partial.append(chunk.substr(0, end));
+    if (!partial.empty() && partial.back() == '\r') partial.pop_back();
+    line(partial);
+    partial.clear();
+    chunk.remove_prefix(end + 1);
+  }
+}
+
 [[noreturn]] void io_failure(const std::string& what, const fs::path& path) {
   throw std::runtime_error("cannot " + what + " `" + path.string() + "`: " + std::strerror(errno));
 }
@@ -102,7 +118,7 @@ void OutputFiles::write_line(std::string_view line) {
   if (!ok) io_failure("write", entries_[current_].temp_path);
 }
 
-void OutputFiles::execute(const Directive& d) {
+void OutputFiles::execute(const Directive& d, const LineCallback& copied_line) {
   std::size_t index = find(d.name);
   switch (d.verb) {
     case Directive::Verb::Open:
@@ -129,7 +145,7 @@ void OutputFiles::execute(const Directive& d) {
       }
       return;
     case Directive::Verb::Copy:
-      copy_into_current(d.name);
+      copy_into_current(d.name, copied_line);
       return;
     case Directive::Verb::MakeDir: {
       std::error_code error;
@@ -140,7 +156,7 @@ void OutputFiles::execute(const Directive& d) {
   }
 }
 
-void OutputFiles::copy_into_current(std::string_view name) {
+void OutputFiles::copy_into_current(std::string_view name, const LineCallback& copied_line) {
   std::size_t index = find(name);
   fs::path source;
   if (index != npos && !entries_[index].deleted) {
@@ -154,12 +170,15 @@ void OutputFiles::copy_into_current(std::string_view name) {
   if (!in) throw std::runtime_error("cannot copy `" + std::string(name) + "`: no such file in this run or in `" +
                                     directory_.string() + "`");
   std::FILE* out = entries_[current_].file;
+  std::string partial;  // a line cut by the end of a buffer
   char buffer[1 << 14];
   while (in) {
     in.read(buffer, sizeof buffer);
     auto n = static_cast<std::size_t>(in.gcount());
     if (n && fwrite_unlocked(buffer, 1, n, out) != n) io_failure("write", entries_[current_].temp_path);
+    if (copied_line) split_lines(std::string_view(buffer, n), partial, copied_line);
   }
+  if (copied_line && !partial.empty()) copied_line(partial);
 }
 
 std::string OutputFiles::display_name(const Entry& e) const {

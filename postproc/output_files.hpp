@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -33,7 +34,10 @@ public:
   // Appends one line and its line end to the current file.
   void write_line(std::string_view line);
   // Executes a directive. Throws std::runtime_error when it cannot (a file to copy that does not exist).
-  void execute(const Directive& directive);
+  // `copied_line`, when given, receives each line a `copy` inserted (without its line end), so that
+  // observers see the copied text as lines of the current file.
+  using LineCallback = std::function<void(std::string_view)>;
+  void execute(const Directive& directive, const LineCallback& copied_line = {});
 
   // The current file's name: as the directive wrote it, or the main file's name.
   std::string current_name() const;
@@ -60,7 +64,7 @@ private:
   void open_handle(Entry& e, const char* mode);
   void close_handle(Entry& e);
   void switch_to(std::size_t index);
-  void copy_into_current(std::string_view name);
+  void copy_into_current(std::string_view name, const LineCallback& copied_line);
   std::string display_name(const Entry& e) const;
 
   std::filesystem::path directory_;

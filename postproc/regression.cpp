@@ -101,6 +101,13 @@ void RegressionComparer::produced(const std::string& stream, std::string_view te
   }
 }
 
+void RegressionComparer::discarded(const std::string& stream) {
+  auto it = streams_.find(stream);
+  if (it == streams_.end() || it->second.expected) return;
+  std::erase(unmatched_, stream);
+  streams_.erase(it);
+}
+
 void RegressionComparer::finish() {
   for (auto& [name, s] : streams_) {
     if (!s.expected || s.expected_done) continue;

@@ -63,6 +63,8 @@ public:
 
   // One produced line of `stream`.
   void produced(const std::string& stream, std::string_view text, const LineOrigin& origin);
+  // A stream the run deleted (`!! delete file = X !!`): no longer reported as not compared.
+  void discarded(const std::string& stream);
   // Ends the comparison: lines still expected are differences.
   void finish();
 
