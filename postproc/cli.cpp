@@ -58,6 +58,7 @@ const std::vector<Subcommand>& subcommands() {
       test_command(),
       explain_command(),
       plot_command(),
+      verify_command(),
   };
   return all;
 }

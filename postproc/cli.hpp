@@ -64,5 +64,6 @@ Subcommand check_command();
 Subcommand test_command();
 Subcommand explain_command();
 Subcommand plot_command();
+Subcommand verify_command();
 
 }  // namespace postproc::cli

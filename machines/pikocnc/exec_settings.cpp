@@ -140,7 +140,8 @@ void Interpreter::misc_modes(const Resolved& r, Words& w) {
     }
     if (s_.compensation_radius < 0) warn(w.col('R'), "negative compensation radius");
     warn(r.column(left ? Op::G41 : Op::G42), "cutter radius compensation is not modelled yet: the programmed path is emitted");
-    compensator_.set(left ? 1 : -1, s_.compensation_radius, options_.dialect == Dialect::V2016 ? Plane::XY : s_.plane);
+    if (options_.cutter_compensation)
+      compensator_.set(left ? 1 : -1, s_.compensation_radius, options_.dialect == Dialect::V2016 ? Plane::XY : s_.plane);
   }
   // 12. tool offsets, MDI only
   const bool g43 = r.has(Op::G43) || r.has(Op::G43_1) || r.has(Op::G43_2);
