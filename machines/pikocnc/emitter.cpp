@@ -1,5 +1,6 @@
 #include "machines/pikocnc/emitter.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -16,6 +17,11 @@ void Emitter::finish_command() {
 
 void Emitter::add(std::string_view name) {
   finish_command();
+  if (muted_) {
+    current_ = &scratch_;
+    fill_ = 0;
+    return;
+  }
   if (tail_ == queue_.size()) {
     queue_.emplace_back();
     lines_.push_back(0);
@@ -36,12 +42,56 @@ void Emitter::add(std::string_view name) {
 
 bool Emitter::pop(toolpath::Command& out, std::size_t& line) {
   finish_command();
-  if (head_ == tail_) return false;
+  if (empty()) return false;
   std::swap(out, queue_[head_]);
   out.index = next_index_++;
   line = lines_[head_];
-  if (++head_ == tail_) head_ = tail_ = 0;
+  if (++head_ == tail_) {
+    for (Hole& h : holes_) h.pos -= head_;  // holes waiting at the end move to the front too
+    head_ = tail_ = 0;
+  }
   return true;
+}
+
+void Emitter::reserve() {
+  finish_command();
+  if (muted_) return;
+  const bool wants = attach_ && !line_attached_ && line_ > 0;
+  holes_.push_back({tail_, line_, wants, wants ? std::string(line_text_) : std::string()});
+  if (wants) line_attached_ = true;  // the hole's first command will carry the text
+}
+
+void Emitter::begin_fill() {
+  finish_command();
+  fill_start_ = tail_;
+  saved_line_ = line_;
+  saved_text_ = line_text_;
+  saved_attached_ = line_attached_;
+  if (muted_ || holes_.empty()) return;
+  const Hole& h = holes_.front();
+  line_ = h.line;
+  line_text_ = h.text;
+  line_attached_ = !h.wants_text;
+}
+
+void Emitter::end_fill() {
+  finish_command();
+  line_ = saved_line_;
+  line_text_ = saved_text_;
+  line_attached_ = saved_attached_;
+  if (muted_ || holes_.empty()) return;
+  const std::size_t pos = holes_.front().pos, added = tail_ - fill_start_;
+  const auto at = static_cast<std::ptrdiff_t>(pos), mid = static_cast<std::ptrdiff_t>(fill_start_),
+             end = static_cast<std::ptrdiff_t>(tail_);
+  std::rotate(queue_.begin() + at, queue_.begin() + mid, queue_.begin() + end);
+  std::rotate(lines_.begin() + at, lines_.begin() + mid, lines_.begin() + end);
+  holes_.erase(holes_.begin());
+  for (Hole& h : holes_) h.pos += added;
+}
+
+void Emitter::mute(bool on) {
+  finish_command();
+  muted_ = on;
 }
 
 toolpath::Value& Emitter::slot(std::string_view name, toolpath::ValueKind kind) {
@@ -81,6 +131,7 @@ void Emitter::straight(const Move& m, const Eigen::Vector3d& to, bool from_arc) 
 void Emitter::move(const Move& m, const Frame& frame) {
   if (m.kind != MoveKind::Arc) {
     straight(m, m.in_work ? m.to : frame.to_work(m.to), false);
+    if (m.compensated) compensation_marks(m, frame);
     return;
   }
   // An arc stays an arc when the frame keeps its plane a circle in one of the main planes.
@@ -119,7 +170,15 @@ void Emitter::move(const Move& m, const Frame& frame) {
   number("arc_size", m.sweep * 180.0 / kPi);
   word("arc_direction", ccw ? "CCW" : "CW");
   word("arc_plane", plane_name(plane));
-  if (m.compensated) logical("compensated", true);
+  if (m.compensated) compensation_marks(m, frame);
+}
+
+void Emitter::compensation_marks(const Move& m, const Frame& frame) {
+  logical("compensated", true);
+  const Eigen::Vector3d p = frame.to_work(m.programmed);
+  number("prog_xpos", p.x());
+  number("prog_ypos", p.y());
+  number("prog_zpos", p.z());
 }
 
 void Emitter::chords(const Move& m, const Frame& frame) {
@@ -150,6 +209,7 @@ void Emitter::chords(const Move& m, const Frame& frame) {
       p[ax.normal] = m.from[ax.normal] + (m.to[ax.normal] - m.from[ax.normal]) * t;
     }
     straight(piece, frame.to_work(p), true);
+    if (m.compensated) compensation_marks(m, frame);
   }
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -26,9 +27,34 @@ public:
   void text(std::string_view name, std::string_view v);
   void word(std::string_view name, std::string_view v);
 
-  bool empty() const { return head_ == tail_; }
+  // True when no command can be handed over: the queue is empty or stops at an unfilled hole.
+  bool empty() const { return head_ == (holes_.empty() ? tail_ : holes_.front().pos); }
   // Hands the oldest queued command over (swapping buffers); false when the queue is empty.
   bool pop(toolpath::Command& out, std::size_t& line);
+
+  // Holes keep the place of commands that are not known yet (cutter compensation waits for the
+  // next element): reserve() marks the end of the queue; commands added between begin_fill() and
+  // end_fill() go into the oldest hole, with the NC line that was current when it was reserved.
+  // Nothing behind a hole is handed over until it is filled. Holes are filled oldest first.
+  void reserve();
+  void begin_fill();
+  void end_fill();
+  std::size_t holes() const { return holes_.size(); }
+
+  // While muted (the interpreter looking ahead), commands are built and thrown away.
+  struct Context {
+    std::size_t line;
+    bool line_attached, with_a, with_b;
+  };
+  Context context() const { return {line_, line_attached_, with_a_, with_b_}; }
+  void mute(bool on);
+  void restore(const Context& c) {
+    line_ = c.line;
+    line_text_ = {};
+    line_attached_ = true;
+    with_a_ = c.with_a;
+    with_b_ = c.with_b;
+  }
 
   // The NC line the commands added from now on come from (for positions and trace lines).
   void set_line(std::size_t line, std::string_view text) {
@@ -47,6 +73,15 @@ private:
   void positions(const Eigen::Vector3d& p, double a, double b);
   void straight(const Move& m, const Eigen::Vector3d& to, bool from_arc);
   void chords(const Move& m, const Frame& frame);
+  // compensated:true and the programmed end point (prog_xpos ...) of a move G41/G42 moved.
+  void compensation_marks(const Move& m, const Frame& frame);
+
+  struct Hole {
+    std::size_t pos;   // queue position of its first command
+    std::size_t line;  // NC line of the commands that fill it
+    bool wants_text;   // the NC line text goes to its first command
+    std::string text;
+  };
 
   std::vector<toolpath::Command> queue_;
   toolpath::Command* current_ = nullptr;  // the command being filled
@@ -60,6 +95,13 @@ private:
   bool attach_ = false;
   bool with_a_ = false, with_b_ = false;
   double chord_tolerance_;
+  std::vector<Hole> holes_;  // oldest first; few at a time
+  std::size_t fill_start_ = 0;
+  std::size_t saved_line_ = 0;
+  std::string_view saved_text_;
+  bool saved_attached_ = false;
+  bool muted_ = false;
+  toolpath::Command scratch_;  // where muted commands go
 };
 
 }  // namespace pikocnc

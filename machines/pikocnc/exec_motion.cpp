@@ -18,11 +18,13 @@ struct Target {
 }  // namespace
 
 void Interpreter::put(Move& m) {
-  if (compensator_.idle() || m.in_work) {
-    if (!compensator_.idle()) compensator_.flush(emitter_, diagnostics_);
+  const bool compensable = !m.in_work && !uncompensable_ && m.kind != MoveKind::Thread;
+  if (previewing_) {
+    preview_.take(m, compensable, {line_, motion_column_});
+  } else if (!compensator_.active()) {
     emitter_.move(m, frame());
   } else {
-    compensator_.move(m, frame(), emitter_, diagnostics_, line_);
+    compensator_.move(m, frame(), {line_, motion_column_}, compensable, emitter_, diagnostics_);
   }
 }
 
@@ -88,8 +90,16 @@ void Interpreter::motion(const Resolved& r, Words& w) {
       return;
     case Op::G28: home(options_.home1); return;
     case Op::G30: home(options_.home2); return;
-    case Op::G65: probe(w); return;
-    case Op::G76: lathe_thread(w); return;
+    case Op::G65:
+      uncompensable_ = true;
+      probe(w);
+      uncompensable_ = false;
+      return;
+    case Op::G76:
+      uncompensable_ = true;
+      lathe_thread(w);
+      uncompensable_ = false;
+      return;
     case Op::Macro: {
       emitter_.add("@macro");
       emitter_.text("name", fmt::format("G{}", r.macro.number));
@@ -123,7 +133,9 @@ void Interpreter::motion(const Resolved& r, Words& w) {
     s_.motion = r.motion;
   }
   if (s_.cycle_active) {
+    uncompensable_ = true;
     cycle(s_.motion, r.motion != Op::Unknown, w);
+    uncompensable_ = false;
     return;
   }
   bool any = false;

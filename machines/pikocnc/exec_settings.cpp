@@ -125,10 +125,12 @@ void Interpreter::misc_modes(const Resolved& r, Words& w) {
   // 11. cutter compensation
   if (r.has(Op::G40)) {
     s_.compensation = 40;
-    compensator_.set(0, 0.0, s_.plane);
+    if (previewing_) preview_.end();
+    else compensator_.stop(emitter_);
   }
   if (r.has(Op::G41) || r.has(Op::G42)) {
     const bool left = r.has(Op::G41);
+    const std::size_t column = r.column(left ? Op::G41 : Op::G42);
     s_.compensation = left ? 41 : 42;
     if (w.has('R')) {
       s_.compensation_radius = w.len_plain('R');
@@ -136,12 +138,14 @@ void Interpreter::misc_modes(const Resolved& r, Words& w) {
       const auto it = options_.tools.find(s_.tool);
       s_.compensation_radius = it == options_.tools.end() ? 0.0 : it->second.radius;
       if (it == options_.tools.end())
-        warn(r.column(left ? Op::G41 : Op::G42), fmt::format("no R and no radius for tool {} in the tool table: radius 0", s_.tool));
+        warn(column, fmt::format("no R and no radius for tool {} in the tool table: radius 0", s_.tool));
     }
-    if (s_.compensation_radius < 0) warn(w.col('R'), "negative compensation radius");
-    warn(r.column(left ? Op::G41 : Op::G42), "cutter radius compensation is not modelled yet: the programmed path is emitted");
-    if (options_.cutter_compensation)
-      compensator_.set(left ? 1 : -1, s_.compensation_radius, options_.dialect == Dialect::V2016 ? Plane::XY : s_.plane);
+    if (s_.compensation_radius < 0) warn(w.col('R'), "negative compensation radius: the path moves to the other side");
+    // The 2016 dialect has only the XY plane; in G18 (lathe) a G1 entry move leads into the path.
+    // Options::cutter_compensation = false (postproc verify) keeps the programmed path.
+    const Plane plane = options_.dialect == Dialect::V2016 ? Plane::XY : s_.plane;
+    if (previewing_) preview_.end();
+    else if (options_.cutter_compensation) compensator_.start(left ? 1 : -1, s_.compensation_radius, plane, plane == Plane::ZX, emitter_);
   }
   // 12. tool offsets, MDI only
   const bool g43 = r.has(Op::G43) || r.has(Op::G43_1) || r.has(Op::G43_2);

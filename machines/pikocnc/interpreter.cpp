@@ -14,6 +14,7 @@ Interpreter::Interpreter(std::istream& in, std::string file_name, Options option
       lines_(in),
       diagnostics_(options_.diagnostic_limit),
       emitter_(options_.chord_tolerance),
+      compensator_(file_),
       restarts_left_(options_.m99_restarts) {
   emitter_.attach_nc_lines(options_.nc_lines_in_trace);
   s_.bases = options_.work_offsets;
@@ -70,12 +71,62 @@ bool Interpreter::run() {
     lex_line(text, line_, block_, diagnostics_);
     emitter_.set_line(line_, text);
     execute(block_);
+    if (compensator_.wants_preview()) preview_chain();
   }
   return true;
 }
 
+void Interpreter::preview_chain() {
+  // Everything the lines ahead may change is kept and put back; the file is read again later.
+  const State state = s_;
+  const std::vector<Loop> loops = loops_;
+  const LineReader::Mark mark = lines_.mark();
+  const std::size_t line = line_, executed = executed_, column = motion_column_;
+  const int restarts = restarts_left_;
+  const double pitch = thread_pitch_;
+  const std::uint32_t changed_axes = transform_changed_axes_;
+  const Emitter::Context context = emitter_.context();
+  Diagnostics silent(0);
+  std::swap(diagnostics_, silent);
+  emitter_.mute(true);
+  previewing_ = true;
+  preview_ = ChainPreview{compensator_.plane()};
+  try {
+    std::string_view text;
+    while (!preview_.done && lines_.next(text) && ++executed_ <= options_.max_executed_lines) {
+      line_ = lines_.line_number();
+      if (is_percent_line(text)) continue;
+      lex_line(text, line_, block_, diagnostics_);
+      execute(block_);
+    }
+  } catch (const toolpath::InputError&) {
+    // the error is reported when the program really gets there
+  }
+  previewing_ = false;
+  emitter_.mute(false);
+  emitter_.restore(context);
+  std::swap(diagnostics_, silent);
+  s_ = state;
+  loops_ = loops;
+  lines_.seek(mark);
+  line_ = line;
+  executed_ = executed;
+  motion_column_ = column;
+  restarts_left_ = restarts;
+  thread_pitch_ = pitch;
+  transform_changed_axes_ = changed_axes;
+  probe_protected_ = false;
+  uncompensable_ = false;
+  frame_dirty_ = true;
+  compensator_.resolve_approach(preview_, emitter_);
+}
+
 void Interpreter::finish(std::string_view end_code) {
-  compensator_.flush(emitter_, diagnostics_);
+  if (previewing_) {  // running ahead: the program ends the chain
+    preview_.end();
+    return;
+  }
+  compensator_.stop(emitter_);
   if (started_) {
     emitter_.add("@end_program");
     const Axes5 w = work_position();
@@ -161,7 +212,9 @@ void Interpreter::execute(const Block& block) {
     return;
   }
   if (r.has(Op::M99)) {
-    if (restarts_left_ > 0) {
+    if (previewing_) {
+      preview_.end();
+    } else if (restarts_left_ > 0) {
       --restarts_left_;
       loops_.clear();
       lines_.seek(program_start_);

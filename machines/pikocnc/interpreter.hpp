@@ -105,6 +105,9 @@ private:
   void probe(Words& w);
   void lathe_thread(Words& w);
   void put(Move& m);  // to the compensation stage or straight to the emitter
+  // Runs the program ahead, output muted, to see the chain an approach rapid leads to (the
+  // compensation's end-of-contour rule needs its last element), then goes back.
+  void preview_chain();
 
   // exec_cycles.cpp
   void cycle(Op op, bool programmed, Words& w);
@@ -120,6 +123,9 @@ private:
   Diagnostics quiet_{0};
   Emitter emitter_;
   Compensator compensator_;
+  bool uncompensable_ = false;  // the moves being made are a cycle's or a probe's
+  bool previewing_ = false;
+  ChainPreview preview_;
   State s_;
   Block block_;
   std::unique_ptr<Resolved, ResolvedDeleter> resolved_;  // reused for every line

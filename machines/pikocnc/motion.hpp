@@ -37,6 +37,7 @@ struct Move {
   bool in_work = false;        // machine moves (G53, G28, G30): already in work coordinates
   bool protected_move = false; // G65 P9810
   bool compensated = false;    // geometry moved by G41/G42
+  Eigen::Vector3d programmed = Eigen::Vector3d::Zero();  // compensated: the programmed end point
 };
 
 }  // namespace pikocnc
