@@ -21,7 +21,7 @@ double length_of(const OffsetElement& e, double dt) { return e.arc ? dt * e.radi
 }  // namespace
 
 bool moves_in_plane(const Move& m, Plane plane) {
-  if (m.kind == MoveKind::Arc && m.plane == plane) return true;
+  if ((m.kind == MoveKind::Arc && m.plane == plane) || m.plane_words) return true;
   return (in_plane(m.to, plane) - in_plane(m.from, plane)).norm() > kMinMotion;
 }
 

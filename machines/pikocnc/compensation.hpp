@@ -40,7 +40,8 @@ struct ChainPreview {
   void end() { done = true; }
 };
 
-// True when the move goes somewhere in `plane` (arcs in the plane always do).
+// True when the move goes somewhere in `plane` (arcs in the plane always do), or is a rapid that
+// writes an axis of the plane (an approach, even when it stays where it is).
 bool moves_in_plane(const Move& m, Plane plane);
 
 class Compensator {

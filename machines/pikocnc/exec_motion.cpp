@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <utility>
 
 #include "machines/pikocnc/interpreter_detail.hpp"
 
@@ -47,6 +48,7 @@ Eigen::Vector3d Interpreter::target(Words& w, bool incremental_words, bool allow
       programmed |= 1u << i;
     }
   }
+  programmed_axes_ = programmed;
   const std::uint32_t affected = transform_changed_axes_ & programmed;
   if (affected) {
     if (affected != transform_changed_axes_)
@@ -57,8 +59,17 @@ Eigen::Vector3d Interpreter::target(Words& w, bool incremental_words, bool allow
 }
 
 void Interpreter::straight(MoveKind kind, const Eigen::Vector3d& to, double a, double b) {
-  if ((to - s_.prog).norm() < 1e-12 && a == s_.prog_a && b == s_.prog_b) return;  // zero length: not emitted
+  // With compensation on, a rapid that writes an axis of the plane approaches the next contour even
+  // when the programmed point is where the tool is (its offset point is not).
+  const std::uint32_t written = std::exchange(programmed_axes_, 0u);
+  bool approach = false;
+  if (kind == MoveKind::Rapid && compensator_.active()) {
+    const PlaneAxes ax = axes_of(compensator_.plane());
+    approach = (written & ((1u << ax.first) | (1u << ax.second))) != 0;
+  }
+  if ((to - s_.prog).norm() < 1e-12 && a == s_.prog_a && b == s_.prog_b && !approach) return;  // zero length: not emitted
   Move m;
+  m.plane_words = approach;
   m.kind = kind;
   m.from = s_.prog;
   m.to = to;

@@ -148,6 +148,7 @@ private:
   double thread_pitch_ = 0.0;
   std::size_t motion_column_ = 1;  // column of the line's motion code, for errors of modal moves
   std::uint32_t transform_changed_axes_ = 0;  // program axes to program in the next move (section 10.6)
+  std::uint32_t programmed_axes_ = 0;         // program axes the line's move wrote (bit i: X Y Z)
 };
 
 }  // namespace pikocnc

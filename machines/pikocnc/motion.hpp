@@ -36,6 +36,7 @@ struct Move {
   double pitch = 0.0;          // Thread
   bool in_work = false;        // machine moves (G53, G28, G30): already in work coordinates
   bool protected_move = false; // G65 P9810
+  bool plane_words = false;    // a rapid that writes an axis of the compensation plane
   bool compensated = false;    // geometry moved by G41/G42
   Eigen::Vector3d programmed = Eigen::Vector3d::Zero();  // compensated: the programmed end point
 };
