@@ -80,8 +80,8 @@ OffsetElement Compensator::element(const Move& m, SourcePlace where) const {
   if (m.kind != MoveKind::Arc) return offset_line(a, b, offset_);
   const Eigen::Vector2d c = flat(m.centre);
   const OffsetElement e = offset_arc(a, b, c, m.ccw, m.sweep, offset_);
-  if (e.radius <= kSamePoint)
-    fail(where, fmt::format("arc radius {} is not larger than the compensation radius {} on the inside of the arc: "
+  if (e.radius < -point_tolerance_)
+    fail(where, fmt::format("arc radius {} is smaller than the compensation radius {} on the inside of the arc: "
                             "the tool does not fit (section 8.1)",
                             clean((a - c).norm()), clean(std::abs(offset_))));
   return e;
@@ -192,6 +192,20 @@ void Compensator::resolve_approach(const ChainPreview& preview, Emitter& out) {
 void Compensator::next_element(const Held& h, Emitter& out, Diagnostics& diag) {
   const OffsetElement e = element(h.move, h.where);
   const int normal = axes_of(plane_).normal;
+  if (e.arc && e.radius <= point_tolerance_) {
+    // The arc's radius is the tool's on its inside: the tool only turns on the centre, which is
+    // where the offset neighbours end and start. What is left is the arc's move along the normal.
+    Move pivot = h.move;
+    pivot.kind = MoveKind::Feed;
+    pivot.from = pivot.to;
+    if (phase_ == Phase::Entry || phase_ == Phase::Chain) {
+      out.reserve();
+      between_.push_back({pivot, h.frame, h.where});
+    } else {
+      emit(pivot, h.frame, lift(flat(position_), h.move.to[normal]), true, out);
+    }
+    return;
+  }
   switch (phase_) {
     case Phase::Chain:
       corner(h, e, out);
@@ -236,7 +250,7 @@ void Compensator::next_element(const Held& h, Emitter& out, Diagnostics& diag) {
 
 void Compensator::corner(const Held& next, const OffsetElement& e, Emitter& out) {
   const OffsetElement& a = pending_elem_;
-  const Eigen::Vector2d corner_point = flat(pending_.move.to);
+  const Eigen::Vector2d corner_point = flat(next.move.from);  // the pending end, unless an arc shrank to a point
   double a_end = a.end_param();
   Eigen::Vector2d a_point = a.end;
   double b_start = 0.0;

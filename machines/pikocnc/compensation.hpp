@@ -46,7 +46,10 @@ bool moves_in_plane(const Move& m, Plane plane);
 
 class Compensator {
 public:
-  explicit Compensator(std::string file_name) : file_(std::move(file_name)) {}
+  // `point_tolerance`: an arc whose offset radius is within it of zero shrinks to a point (the tool
+  // radius equals the arc radius on its inside: the tool pivots on the arc's centre).
+  Compensator(std::string file_name, double point_tolerance)
+      : file_(std::move(file_name)), point_tolerance_(point_tolerance) {}
 
   // G41 (side +1) or G42 (side -1) with `radius` in `plane`. With `entry_rule` (G18, lathe) a
   // chain starts with its G1 entry move instead of a G0 approach.
@@ -92,6 +95,7 @@ private:
   [[noreturn]] void fail(SourcePlace where, const std::string& message) const;
 
   std::string file_;
+  double point_tolerance_;
   int side_ = 0;
   double offset_ = 0.0;  // signed: > 0 left
   Plane plane_ = Plane::XY;

@@ -14,7 +14,7 @@ Interpreter::Interpreter(std::istream& in, std::string file_name, Options option
       lines_(in),
       diagnostics_(options_.diagnostic_limit),
       emitter_(options_.chord_tolerance),
-      compensator_(file_),
+      compensator_(file_, options_.arc_tolerance),
       restarts_left_(options_.m99_restarts) {
   emitter_.attach_nc_lines(options_.nc_lines_in_trace);
   s_.bases = options_.work_offsets;
