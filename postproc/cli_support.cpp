@@ -66,10 +66,8 @@ void Progress::update(std::size_t commands) {
   if (now - last_ms_ < 100) return;
   last_ms_ = now;
   double fraction = 0;
-  if (input_.size > 0) {
-    auto at = input_.stream->tellg();
-    if (at >= 0) fraction = std::min(1.0, static_cast<double>(at) / static_cast<double>(input_.size));
-  }
+  if (input_.size > 0)  // the reader runs on a thread of its own: ask it, not the stream
+    fraction = std::min(1.0, static_cast<double>(input_.reader->bytes_read()) / static_cast<double>(input_.size));
   constexpr int kWidth = 30;
   int filled = static_cast<int>(fraction * kWidth);
   err_ << fmt::format("\r[{}{}] {:3.0f}%  {} commands", std::string(static_cast<std::size_t>(filled), '#'),

@@ -12,6 +12,7 @@
 #include "postproc/host_variables.hpp"
 #include "postproc/parameter_table.hpp"
 #include "postproc/structure.hpp"
+#include "toolpath/prefetch.hpp"
 #include "toolpath/value.hpp"
 
 namespace postproc {
@@ -152,7 +153,9 @@ public:
     guarded([&] { interpreter_.start(); });
     StreamCommands stream(input);
     auto filtered = prp::build_filter_chain(engine_.machine(), stream);
-    toolpath::LookaheadSource lookahead(*filtered);
+    // Reading and filtering run on a second thread, overlapping with the post.
+    toolpath::PrefetchSource prefetched(*filtered);
+    toolpath::LookaheadSource lookahead(prefetched);
     toolpath::Command command;
     std::string previous;
     while (lookahead.next(command)) {
@@ -174,6 +177,13 @@ private:
   struct Slot {
     std::optional<gppl::VariableId> id;
     bool is_string = false;
+  };
+  // What the engine needs to know about a command name, looked up once per name. The slots of its
+  // parameters are remembered by position: a command name's parameters come in the same order
+  // command after command, so one string comparison usually replaces a name lookup.
+  struct CommandInfo {
+    std::optional<gppl::ProcedureId> procedure;
+    std::vector<std::pair<std::string, Slot>> slots;  // by parameter position: name, slot
   };
 
   template <class F>
@@ -222,15 +232,47 @@ private:
   }
 
   gppl::Value convert(const toolpath::Value& v, bool to_string) {
+    gppl::Value out;
+    convert_into(out, v, to_string);
+    return out;
+  }
+
+  // Converts into `out`, reusing its string buffer (called for every parameter of every command).
+  static void clear(gppl::Value& v) {
+    v.integer = 0;
+    v.numeric = 0.0;
+    v.logical = false;
+    v.text.clear();  // keeps its capacity
+  }
+
+  // The same value as convert(), every other field zeroed as gppl::Value's factories leave it.
+  void convert_into(gppl::Value& out, const toolpath::Value& v, bool to_string) {
+    clear(out);
     switch (v.kind) {
-      case toolpath::ValueKind::Integer: return gppl::Value::of_integer(v.integer);
-      case toolpath::ValueKind::Numeric: return gppl::Value::of_numeric(v.numeric);
-      case toolpath::ValueKind::Logical: return gppl::Value::of_logical(v.logical);
-      case toolpath::ValueKind::String: return gppl::Value::of_string(v.text);
+      case toolpath::ValueKind::Integer: out.type = gppl::Type::Integer, out.integer = v.integer; return;
+      case toolpath::ValueKind::Numeric: out.type = gppl::Type::Numeric, out.numeric = v.numeric; return;
+      case toolpath::ValueKind::Logical: out.type = gppl::Type::Logical, out.logical = v.logical; return;
+      case toolpath::ValueKind::String: out.type = gppl::Type::String, out.text.assign(v.text); return;
       case toolpath::ValueKind::Enum:
-        return to_string ? gppl::Value::of_string(v.text) : gppl::Value::of_integer(enums_.code(v.text));
+        if (to_string) out.type = gppl::Type::String, out.text.assign(v.text);
+        else out.type = gppl::Type::Integer, out.integer = enums_.code(v.text);
+        return;
     }
-    return {};
+  }
+
+  CommandInfo& info(std::string_view name) {
+    auto it = commands_.find(name);
+    if (it == commands_.end()) it = commands_.emplace(std::string(name), CommandInfo{interpreter_.find_procedure(name), {}}).first;
+    return it->second;
+  }
+
+  // The slot of parameter number `position` of a command, remembered per command name.
+  const Slot& slot_at(CommandInfo& info, std::size_t position, std::string_view name) {
+    if (position < info.slots.size() && info.slots[position].first == name) return info.slots[position].second;
+    const Slot& s = slot(name);
+    if (position >= info.slots.size()) info.slots.resize(position + 1);
+    info.slots[position] = {std::string(name), s};
+    return s;
   }
 
   static gppl::ChangeOverride change_override(toolpath::ChangeFlag flag) {
@@ -243,7 +285,11 @@ private:
   }
 
   void set_string(const std::optional<gppl::VariableId>& id, std::string_view text) {
-    if (id) interpreter_.assign(*id, gppl::Value::of_string(std::string(text)));
+    if (!id) return;
+    clear(scratch_);
+    scratch_.type = gppl::Type::String;
+    scratch_.text.assign(text);
+    interpreter_.assign(*id, scratch_);
   }
 
   // Optional parameters a command did not supply are inactive (gppl-language.md 1.2).
@@ -266,22 +312,23 @@ private:
     bool reset = engine_.options().reset_modal_memory_at_subroutines;
     if (reset && ProgramStructure::starts_body(command)) interpreter_.reset_change_memory();
 
-    for (const auto& p : command.parameters) {
-      const Slot& s = slot(p.name);
-      if (s.id) interpreter_.assign(*s.id, convert(p.value, s.is_string), change_override(p.value.flag));
+    CommandInfo& command_info = info(command.name);
+    for (std::size_t i = 0; i < command.parameters.size(); ++i) {
+      const toolpath::Parameter& p = command.parameters[i];
+      const Slot& s = slot_at(command_info, i, p.name);
+      if (!s.id) continue;
+      convert_into(scratch_, p.value, s.is_string);
+      interpreter_.assign(*s.id, scratch_, change_override(p.value.flag));
     }
     deactivate_missing(command);
     set_string(prev_command_, previous);
     set_string(current_command_, command.name);
     set_string(next_command_, next);
 
-    auto procedure = procedures_.find(command.name);
-    if (procedure == procedures_.end())
-      procedure = procedures_.emplace(command.name, interpreter_.find_procedure(command.name)).first;
-    if (!procedure->second) {
+    if (!command_info.procedure) {
       ++summary.skipped;
       interpreter_.trace_unhandled(command.name);
-    } else if (interpreter_.call(*procedure->second) == gppl::RunResult::Abort) {
+    } else if (interpreter_.call(*command_info.procedure) == gppl::RunResult::Abort) {
       throw std::runtime_error("the post stopped the run (`abort` in " + command.name + ")");
     }
     if (reset && ProgramStructure::calls_subroutine(command)) interpreter_.reset_change_memory();
@@ -330,7 +377,8 @@ private:
   std::optional<gppl::VariableId> prev_command_, current_command_, next_command_;
   std::vector<std::string> drill_parameters_;
   std::unordered_map<std::string, Slot, TransparentHash, std::equal_to<>> slots_;
-  std::unordered_map<std::string, std::optional<gppl::ProcedureId>, TransparentHash, std::equal_to<>> procedures_;
+  std::unordered_map<std::string, CommandInfo, TransparentHash, std::equal_to<>> commands_;
+  gppl::Value scratch_;  // the value being assigned, reused so that assigning allocates nothing
 };
 
 }  // namespace

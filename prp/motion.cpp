@@ -54,11 +54,30 @@ void set_point(toolpath::Command& c, const Eigen::Vector3d& p) {
   set_number(c, "zpos", p.z());
 }
 
+namespace {
+
+// xpos, ypos, zpos: 0, 1, 2; anything else -1.
+int axis_of(std::string_view name) {
+  if (name.size() != 4 || !toolpath::iequals(name.substr(1), "pos")) return -1;
+  const char a = toolpath::ascii_lower(name[0]);
+  return a >= 'x' && a <= 'z' ? a - 'x' : -1;
+}
+
+}  // namespace
+
+// One pass over the parameters (it runs for every command, in several filters); the first xpos,
+// ypos, zpos count, as with number().
 void ToolPosition::update(const toolpath::Command& c) {
   if (!moves_tool(c)) return;
-  static constexpr std::string_view names[] = {"xpos", "ypos", "zpos"};
-  for (std::size_t i = 0; i < 3; ++i)
-    if (auto v = number(c, names[i])) axes_[i] = *v;
+  bool seen[3] = {false, false, false};
+  for (const toolpath::Parameter& p : c.parameters) {
+    const int i = axis_of(p.name);
+    if (i < 0 || seen[i]) continue;
+    seen[i] = true;
+    const toolpath::Value& v = p.value;
+    if (v.kind == toolpath::ValueKind::Integer || v.kind == toolpath::ValueKind::Numeric)
+      axes_[static_cast<std::size_t>(i)] = v.as_number();
+  }
 }
 
 std::optional<Eigen::Vector3d> ToolPosition::point() const {

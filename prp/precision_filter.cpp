@@ -1,28 +1,45 @@
 #include "prp/precision_filter.hpp"
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 namespace prp {
 namespace {
 
-constexpr std::string_view kPositions[] = {"xpos", "ypos", "zpos"};
-// Lengths rounded with the coordinates.
-constexpr std::string_view kLengths[] = {"xpos",   "ypos",   "zpos",          "xcenter",       "ycenter",
-                                         "xcenter_rel", "ycenter_rel", "radius", "zstart", "drill_upper_z",
-                                         "drill_lower_z", "drill_clearance_z", "drill_depth", "down_step"};
+// The parameters the filter touches: lengths (rounded with the coordinates; the first three are the
+// tool position), then the feed and the spindle speed.
+constexpr std::string_view kNames[] = {"xpos",          "ypos",          "zpos",        "xcenter",
+                                       "ycenter",       "xcenter_rel",   "ycenter_rel", "radius",
+                                       "zstart",        "drill_upper_z", "drill_lower_z", "drill_clearance_z",
+                                       "drill_depth",   "down_step",     "feed",        "spin"};
+constexpr int kFeed = 14, kSpin = 15;
 
-double round_to(double v, int digits) {
-  const double scale = std::pow(10.0, digits);
+// Which of kNames a parameter name is, or -1. Every parameter of every command is looked up, so a
+// name is compared only with the candidates of its own length.
+class NameIndex {
+public:
+  NameIndex() {
+    for (int k = 0; k < static_cast<int>(std::size(kNames)); ++k) by_length_[kNames[k].size()].push_back(k);
+  }
+  int find(std::string_view name) const {
+    if (name.size() >= by_length_.size()) return -1;
+    for (int k : by_length_[name.size()])
+      if (toolpath::iequals(kNames[k], name)) return k;
+    return -1;
+  }
+
+private:
+  std::array<std::vector<int>, 18> by_length_;  // longest name: drill_clearance_z, 17
+};
+
+const NameIndex kIndex;
+
+double scale_of(const std::optional<int>& digits) { return digits ? std::pow(10.0, *digits) : 0.0; }
+
+double round_to(double v, double scale) {
   double r = std::round(v * scale) / scale;
   return r == 0.0 ? 0.0 : r;  // never -0
-}
-
-// Values already at the precision stay as they are (an integer stays an integer).
-void round_parameter(toolpath::Command& c, std::string_view name, int digits) {
-  auto v = number(c, name);
-  if (!v) return;
-  double r = round_to(*v, digits);
-  if (r != *v) set_number(c, name, r);
 }
 
 }  // namespace
@@ -42,27 +59,47 @@ PrecisionSettings PrecisionSettings::from(const MachineParameters& p) {
   return s;
 }
 
+PrecisionFilter::PrecisionFilter(toolpath::CommandSource& input, PrecisionSettings settings)
+    : input_(input),
+      s_(settings),
+      movement_scale_(scale_of(s_.movement_digits)),
+      feed_scale_(scale_of(s_.feed_digits)),
+      spin_scale_(scale_of(s_.spin_digits)) {}
+
+// One pass over the parameters. For each one the steps run in the order of spec 3.1: snap to zero,
+// keep an axis that barely moved, round. Values already at the precision stay as they are (an
+// integer stays an integer); a changed value becomes numeric and keeps its change flag.
 bool PrecisionFilter::next(toolpath::Command& out) {
   if (!input_.next(out)) return false;
   if (!out.is_stream_command()) return true;
-  if (s_.zero_value > 0) {
-    for (std::string_view name : kLengths) {
-      auto v = number(out, name);
-      if (v && *v != 0.0 && std::abs(*v) < s_.zero_value) set_number(out, name, 0.0);
-    }
-    if (moves_tool(out)) {
-      for (int i = 0; i < 3; ++i) {
-        auto v = number(out, kPositions[i]);
-        auto last = sent_.axis(i);
-        if (v && last && *v != *last && std::abs(*v - *last) < s_.zero_value) set_number(out, kPositions[i], *last);
+  const double zero = s_.zero_value;
+  const bool snap_axes = zero > 0 && moves_tool(out);
+  unsigned seen = 0;  // a name given twice: only its first occurrence counts, as with Command::find
+  for (toolpath::Parameter& p : out.parameters) {
+    const int k = kIndex.find(p.name);
+    if (k < 0 || (seen & (1u << k))) continue;
+    seen |= 1u << k;
+    toolpath::Value& v = p.value;
+    if (v.kind != toolpath::ValueKind::Integer && v.kind != toolpath::ValueKind::Numeric) continue;
+    double x = v.as_number();
+    bool changed = false;
+    auto set = [&](double r) {
+      if (r != x) x = r, changed = true;
+    };
+    if (k < kFeed) {
+      if (zero > 0 && x != 0.0 && std::abs(x) < zero) set(0.0);
+      if (snap_axes && k < 3) {
+        auto last = sent_.axis(k);
+        if (last && x != *last && std::abs(x - *last) < zero) set(*last);
       }
+      if (s_.movement_digits) set(round_to(x, movement_scale_));
+    } else if (k == kFeed && s_.feed_digits) {
+      set(round_to(x, feed_scale_));
+    } else if (k == kSpin && s_.spin_digits) {
+      set(round_to(x, spin_scale_));
     }
+    if (changed) v = toolpath::Value::make_numeric(x, v.flag);
   }
-  if (s_.movement_digits) {
-    for (std::string_view name : kLengths) round_parameter(out, name, *s_.movement_digits);
-  }
-  if (s_.feed_digits) round_parameter(out, "feed", *s_.feed_digits);
-  if (s_.spin_digits) round_parameter(out, "spin", *s_.spin_digits);
   sent_.update(out);
   return true;
 }

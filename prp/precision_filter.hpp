@@ -24,12 +24,13 @@ std::optional<int> digits_of(double movement_precision);
 
 class PrecisionFilter final : public toolpath::CommandSource {
 public:
-  PrecisionFilter(toolpath::CommandSource& input, PrecisionSettings settings) : input_(input), s_(settings) {}
+  PrecisionFilter(toolpath::CommandSource& input, PrecisionSettings settings);
   bool next(toolpath::Command& out) override;
 
 private:
   toolpath::CommandSource& input_;
   PrecisionSettings s_;
+  double movement_scale_, feed_scale_, spin_scale_;  // 10^digits
   ToolPosition sent_;
 };
 

@@ -1,6 +1,8 @@
 #include "toolpath/trace_reader.hpp"
 
+#include <array>
 #include <cctype>
+#include <cstdint>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -11,13 +13,27 @@ namespace {
 
 constexpr std::size_t kChunk = 1 << 18;
 
-// ASCII character classes, locale-independent (traces are 8-bit text in any code page).
-bool is_blank(char c) { return c == ' ' || c == '\t'; }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool is_ident_char(char c) { return is_ident_start(c) || is_digit(c); }
+// ASCII character classes, locale-independent (traces are 8-bit text in any code page), from a
+// table: the reader classifies every byte of a job.
+enum : std::uint8_t { kBlank = 1, kDigit = 2, kIdentStart = 4, kIdentChar = 8 };
+constexpr std::array<std::uint8_t, 256> kClasses = [] {
+  std::array<std::uint8_t, 256> t{};
+  t[' '] = t['\t'] = kBlank;
+  for (int c = '0'; c <= '9'; ++c) t[c] = kDigit | kIdentChar;
+  for (int c = 'a'; c <= 'z'; ++c) t[c] = kIdentStart | kIdentChar;
+  for (int c = 'A'; c <= 'Z'; ++c) t[c] = kIdentStart | kIdentChar;
+  t['_'] = kIdentStart | kIdentChar;
+  return t;
+}();
+bool has_class(char c, std::uint8_t cls) { return (kClasses[static_cast<unsigned char>(c)] & cls) != 0; }
+bool is_blank(char c) { return has_class(c, kBlank); }
+bool is_digit(char c) { return has_class(c, kDigit); }
+bool is_ident_start(char c) { return has_class(c, kIdentStart); }
+bool is_ident_char(char c) { return has_class(c, kIdentChar); }
 
 std::size_t skip_blanks(std::string_view s, std::size_t i) {
+  // SolidCAM pads its traces with runs of spaces: skip them eight at a time.
+  while (i + 8 <= s.size() && std::memcmp(s.data() + i, "        ", 8) == 0) i += 8;
   while (i < s.size() && is_blank(s[i])) ++i;
   return i;
 }
@@ -42,29 +58,58 @@ bool starts_with_pair(std::string_view s) {
 }
 
 // Number syntax: [+-] digits [. digits] [e [+-] digits] with at least one digit in the mantissa.
-// Returns the length of the number, or 0; sets `is_numeric` when it has a point or an exponent.
-std::size_t number_length(std::string_view s, bool& is_numeric) {
-  std::size_t i = 0, digits = 0;
-  is_numeric = false;
-  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-  while (i < s.size() && is_digit(s[i])) ++i, ++digits;
+// The scan also collects the mantissa's digits, so that plain decimals need no second pass.
+struct NumberScan {
+  std::size_t length = 0;  // 0: not a number
+  bool numeric = false;    // it has a point or an exponent
+  bool exponent = false;
+  bool negative = false;
+  int digits = 0;          // in the mantissa
+  int decimals = 0;        // digits after the point
+  std::uint64_t mantissa = 0;  // exact while digits <= 19
+};
+
+NumberScan scan_number(std::string_view s) {
+  NumberScan n;
+  std::size_t i = 0;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) n.negative = s[i++] == '-';
+  auto digit_run = [&](bool after_point) {
+    for (; i < s.size() && is_digit(s[i]); ++i) {
+      if (++n.digits <= 19) n.mantissa = n.mantissa * 10 + static_cast<std::uint64_t>(s[i] - '0');
+      n.decimals += after_point;
+    }
+  };
+  digit_run(false);
   if (i < s.size() && s[i] == '.') {
-    is_numeric = true;
+    n.numeric = true;
     ++i;
-    while (i < s.size() && is_digit(s[i])) ++i, ++digits;
+    digit_run(true);
   }
-  if (digits == 0) return 0;
+  if (n.digits == 0) return n;
   if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
     std::size_t j = i + 1;
     if (j < s.size() && (s[j] == '+' || s[j] == '-')) ++j;
     std::size_t exp_start = j;
     while (j < s.size() && is_digit(s[j])) ++j;
     if (j > exp_start) {
-      is_numeric = true;
+      n.numeric = n.exponent = true;
       i = j;
     }
   }
-  return i;
+  n.length = i;
+  return n;
+}
+
+// The exact double of a scanned plain decimal when its mantissa (at most 19 digits) is below 2^53
+// and it has at most 22 decimals: mantissa and power of ten are then exact doubles and one
+// correctly rounded division gives what from_chars gives (Clinger's fast path). False otherwise.
+bool fast_decimal(const NumberScan& n, double& out) {
+  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  if (n.exponent || n.digits > 19 || n.mantissa > (std::uint64_t{1} << 53) || n.decimals > 22) return false;
+  const double v = static_cast<double>(n.mantissa) / kPow10[n.decimals];
+  out = n.negative ? -v : v;
+  return true;
 }
 
 // Where a value sits, for error messages; cheap to pass (no string copies on the hot path).
@@ -93,26 +138,31 @@ void parse_value_into(Value& out, std::string_view text, const Place& where) {
     out.text.assign(text.substr(1, text.size() - 2));
     return;
   }
-  bool is_numeric = false;
-  if (std::size_t n = number_length(text, is_numeric); n > 0) {
-    std::string_view rest = text.substr(n);
+  if (const NumberScan n = scan_number(text); n.length > 0) {
+    std::string_view rest = text.substr(n.length);
     ChangeFlag flag = ChangeFlag::None;
     if (rest == "T" || rest == "t") flag = ChangeFlag::Changed;
     else if (rest == "F" || rest == "f") flag = ChangeFlag::Unchanged;
     if (rest.empty() || flag != ChangeFlag::None) {
-      std::string_view digits = text.substr(0, n);
+      std::string_view digits = text.substr(0, n.length);
       const char* first = digits.data() + (digits.front() == '+' ? 1 : 0);
       const char* last = digits.data() + digits.size();
       out.flag = flag;
-      if (!is_numeric) {
+      if (!n.numeric) {
+        out.kind = ValueKind::Integer;
+        if (n.digits <= 18) {  // exact in an int64
+          const auto magnitude = static_cast<std::int64_t>(n.mantissa);
+          out.integer = n.negative ? -magnitude : magnitude;
+          return;
+        }
         auto [ptr, ec] = std::from_chars(first, last, out.integer);
         if (ec != std::errc() || ptr != last) where.fail(0, "integer out of range: " + std::string(digits));
-        out.kind = ValueKind::Integer;
         return;
       }
+      out.kind = ValueKind::Numeric;
+      if (fast_decimal(n, out.numeric)) return;
       auto [ptr, ec] = std::from_chars(first, last, out.numeric);
       if (ec != std::errc() || ptr != last) where.fail(0, "number out of range: " + std::string(digits));
-      out.kind = ValueKind::Numeric;
       return;
     }
   }
@@ -131,7 +181,7 @@ void parse_value_into(Value& out, std::string_view text, const Place& where) {
 Parameter& add_parameter(Command& out, std::size_t& used, std::string_view name) {
   if (used == out.parameters.size()) out.parameters.emplace_back();
   Parameter& p = out.parameters[used++];
-  p.name.assign(name);
+  if (p.name != name) p.name.assign(name);  // a reused slot usually held the same name
   return p;
 }
 
@@ -182,6 +232,7 @@ bool TraceReader::read_line() {
     buffer_.resize(kChunk);
     in_.read(buffer_.data(), static_cast<std::streamsize>(kChunk));
     buffer_.resize(static_cast<std::size_t>(in_.gcount()));
+    bytes_read_.store(bytes_read_.load(std::memory_order_relaxed) + buffer_.size(), std::memory_order_relaxed);
     buffer_pos_ = 0;
     if (buffer_.empty()) stream_done_ = true;
     if (in_.bad()) fail(1, "read error");

@@ -3,7 +3,9 @@
 // `> NC line` output, wrapped long names). See docs/trace-format.md.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <istream>
 #include <memory>
 #include <string>
@@ -28,6 +30,10 @@ public:
 
   bool next(Command& out) override;
 
+  // Bytes taken from the input so far (in chunks), for a progress bar. Safe to read from another
+  // thread than the one reading.
+  std::uintmax_t bytes_read() const { return bytes_read_.load(std::memory_order_relaxed); }
+
 private:
   bool read_line();
   [[noreturn]] void fail(std::size_t column, const std::string& message) const;
@@ -47,6 +53,7 @@ private:
   std::size_t next_index_ = 0;
   std::size_t used_parameters_ = 0; // parameter slots of the command being read
   bool name_may_be_cut_ = false; // the header's name ran up to `==>` and may continue below
+  std::atomic<std::uintmax_t> bytes_read_{0};
 };
 
 }  // namespace toolpath

@@ -1,7 +1,5 @@
 #include "toolpath/value.hpp"
 
-#include <cctype>
-
 namespace toolpath {
 
 std::string_view kind_name(ValueKind kind) {
@@ -68,17 +66,6 @@ bool operator==(const Value& a, const Value& b) {
     case ValueKind::Enum: return iequals(a.text, b.text);
   }
   return false;
-}
-
-bool iequals(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  // ASCII folding inline: names are ASCII, and libc's tolower (a locale lookup per character) was
-  // most of the time of the stream filters' parameter lookups.
-  auto fold = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (fold(a[i]) != fold(b[i])) return false;
-  }
-  return true;
 }
 
 }  // namespace toolpath

@@ -37,4 +37,27 @@ TEST(PrecisionFilter, SnapsRoundsAndKeepsUnchangedAxes) {
   EXPECT_FALSE(std::signbit(out[2].find("ypos")->numeric));
 }
 
+// Names compare case-insensitively; a name given twice is rounded at its first occurrence only (the
+// one Command::find sees); a change flag survives rounding; text values are left alone.
+TEST(PrecisionFilter, FirstOccurrenceFlagsAndText) {
+  prp::PrecisionSettings s;
+  s.movement_digits = 2;
+  s.spin_digits = -2;
+  ListSource source({command("@line", {{"XPOS", toolpath::Value::make_numeric(1.234, toolpath::ChangeFlag::Changed)},
+                                       {"xpos", num(5.678)},
+                                       {"radius", toolpath::Value::make_string("1.234")},
+                                       {"Spin", toolpath::Value::make_integer(1234)},
+                                       {"start_angle", num(1.234)}})});
+  prp::PrecisionFilter filter(source, s);
+  auto out = drain(filter);
+  ASSERT_EQ(out.size(), 1u);
+  const auto& p = out[0].parameters;
+  ASSERT_EQ(p.size(), 5u);
+  EXPECT_EQ(p[0].value, toolpath::Value::make_numeric(1.23, toolpath::ChangeFlag::Changed));
+  EXPECT_EQ(p[1].value, num(5.678));
+  EXPECT_EQ(p[2].value, toolpath::Value::make_string("1.234"));
+  EXPECT_EQ(p[3].value, num(1200));  // spin_precision -2: hundreds
+  EXPECT_EQ(p[4].value, num(1.234));  // not a length
+}
+
 }  // namespace

@@ -1,0 +1,92 @@
+// PrefetchSource: the same commands in the same order as its source, whatever the batch size; the
+// source's exception at the place it happened; a stop in the middle of a stream.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "toolpath/prefetch.hpp"
+
+using toolpath::Command;
+using toolpath::PrefetchSource;
+
+namespace {
+
+// Commands @c0, @c1, ... each with one parameter `i`; throws after `fail_after` commands when set.
+class Numbered final : public toolpath::CommandSource {
+public:
+  Numbered(std::size_t count, std::size_t fail_after = SIZE_MAX) : count_(count), fail_after_(fail_after) {}
+  bool next(Command& out) override {
+    if (produced_ == fail_after_) throw std::runtime_error("broken at " + std::to_string(produced_));
+    if (produced_ == count_) return false;
+    out.clear();
+    out.name = "@c" + std::to_string(produced_);
+    out.index = produced_;
+    out.set("i", toolpath::Value::make_integer(static_cast<std::int64_t>(produced_)));
+    ++produced_;
+    return true;
+  }
+
+private:
+  std::size_t count_, fail_after_, produced_ = 0;
+};
+
+void expect_numbered(const Command& c, std::size_t i) {
+  EXPECT_EQ(c.name, "@c" + std::to_string(i));
+  EXPECT_EQ(c.index, i);
+  ASSERT_EQ(c.parameters.size(), 1u);
+  EXPECT_EQ(c.parameters[0].value.integer, static_cast<std::int64_t>(i));
+}
+
+struct Shape {
+  std::size_t commands, batch_size, batches;
+};
+
+TEST(PrefetchSource, SameCommandsInOrder) {
+  const Shape shapes[] = {{0, 4, 2}, {1, 4, 2}, {3, 4, 2}, {4, 4, 2}, {5, 4, 2}, {8, 4, 2},
+                          {9, 4, 2}, {1000, 1, 2}, {1000, 3, 3}, {100000, 256, 4}};
+  for (const Shape& s : shapes) {
+    SCOPED_TRACE(std::to_string(s.commands) + " commands, batches of " + std::to_string(s.batch_size));
+    Numbered source(s.commands);
+    PrefetchSource prefetched(source, s.batch_size, s.batches);
+    Command c;
+    std::size_t n = 0;
+    while (prefetched.next(c)) expect_numbered(c, n++);
+    EXPECT_EQ(n, s.commands);
+    EXPECT_FALSE(prefetched.next(c));  // and stays at the end
+  }
+}
+
+TEST(PrefetchSource, RethrowsWhereTheSourceFailed) {
+  for (std::size_t fail_after : {0u, 1u, 3u, 4u, 5u, 17u}) {
+    SCOPED_TRACE(fail_after);
+    Numbered source(100, fail_after);
+    PrefetchSource prefetched(source, 4, 2);
+    Command c;
+    std::size_t n = 0;
+    try {
+      while (prefetched.next(c)) expect_numbered(c, n++);
+      ADD_FAILURE() << "no exception";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "broken at " + std::to_string(fail_after));
+    }
+    EXPECT_EQ(n, fail_after);
+    EXPECT_FALSE(prefetched.next(c));
+  }
+}
+
+TEST(PrefetchSource, StopsInTheMiddleOfAStream) {
+  Numbered source(SIZE_MAX);  // endless
+  {
+    PrefetchSource prefetched(source, 8, 2);
+    Command c;
+    for (std::size_t i = 0; i < 20; ++i) {
+      ASSERT_TRUE(prefetched.next(c));
+      expect_numbered(c, i);
+    }
+  }  // the destructor stops the worker: the test ends
+  SUCCEED();
+}
+
+}  // namespace

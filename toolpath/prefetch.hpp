@@ -1,0 +1,59 @@
+// Runs a command source on a worker thread, so that reading and filtering a stream overlap with
+// posting it: on a long job the two halves take about the same time (docs/performance.md).
+//
+//   PrefetchSource ahead(filtered);   // the worker starts pulling from `filtered`
+//   while (ahead.next(command)) ...   // the same commands, in the same order
+//
+// Commands cross in batches through a small ring: memory stays flat whatever the job length, and
+// a command handed back by next() lends its buffers to the worker, so nothing is allocated in the
+// steady state. An exception thrown by the source is rethrown by next() where the stream reached
+// it, after the commands read before it. `inner` is only used by the worker until the destructor
+// has stopped it.
+#pragma once
+
+#include <condition_variable>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "toolpath/source.hpp"
+
+namespace toolpath {
+
+class PrefetchSource final : public CommandSource {
+public:
+  explicit PrefetchSource(CommandSource& inner, std::size_t batch_size = 256, std::size_t batches = 4);
+  ~PrefetchSource() override;
+  PrefetchSource(const PrefetchSource&) = delete;
+  PrefetchSource& operator=(const PrefetchSource&) = delete;
+
+  bool next(Command& out) override;
+
+private:
+  struct Batch {
+    std::vector<Command> commands;
+    std::size_t count = 0;     // commands filled
+    bool last = false;         // the stream ends (or failed) after these
+    std::exception_ptr error;  // what the source threw after `count` commands
+  };
+
+  void work();
+
+  CommandSource& inner_;
+  std::vector<Batch> ring_;
+  // Batches filled by the worker and released by the reader, counted from the start: the worker
+  // fills ring_[filled_ % size] while fewer than size are unreleased; the reader reads ring_[released_ % size].
+  std::size_t filled_ = 0, released_ = 0;
+  bool stop_ = false;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  // The reader's side (only next() touches these).
+  bool holding_ = false;  // ring_[released_ % size] is being read
+  std::size_t position_ = 0;
+  bool finished_ = false;
+  std::thread worker_;  // last: starts once everything above is ready
+};
+
+}  // namespace toolpath
