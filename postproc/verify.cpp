@@ -5,6 +5,7 @@
 #include <deque>
 #include <numbers>
 
+#include <Eigen/Geometry>  // cross(): declared in Core, defined here (Release builds fail to link without it)
 #include <fmt/format.h>
 
 #include "machines/pikocnc/reader.hpp"
