@@ -1,11 +1,13 @@
 // A temporary file of commands, written once and read back from any position: lets a filter defer
-// or reorder whole jobs without holding them in memory. Commands come back exactly as written
-// (name, index, depth, parameters with kinds and change flags, trace lines).
+// or reorder whole jobs without holding them in memory. Commands come back as written (name, index,
+// depth, parameters with kinds, values and change flags, trace lines); of a value only the field of
+// its kind is kept, the others come back zero or empty.
 #pragma once
 
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "toolpath/command.hpp"
 

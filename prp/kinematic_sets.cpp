@@ -85,7 +85,7 @@ double angle_in(const Vector3d& offset, PlaneAxes a) {
 
 std::optional<SetCoordinate> classify_set_coordinate(std::string_view name) {
   if (name.size() < 5) return std::nullopt;
-  const char first = static_cast<char>(std::tolower(static_cast<unsigned char>(name[0])));
+  const char first = toolpath::ascii_lower(name[0]);
   const auto axis = kAxes.find(first);
   if (axis == std::string_view::npos) return std::nullopt;
   for (int r = 0; r < 3; ++r) {
@@ -125,7 +125,7 @@ void SetHistory::observe(const toolpath::Command& c) {
   for (const auto& p : c.parameters) {
     if (p.value.kind != toolpath::ValueKind::Numeric && p.value.kind != toolpath::ValueKind::Integer) continue;
     if (p.name.size() == 4 && ends_with_ci(p.name, "pos")) {
-      const auto axis = kAxes.find(static_cast<char>(std::tolower(static_cast<unsigned char>(p.name[0]))));
+      const auto axis = kAxes.find(toolpath::ascii_lower(p.name[0]));
       if (axis != std::string_view::npos) {
         pos[axis] = p.value.as_number();
         pos_seen |= 1 << axis;

@@ -51,11 +51,13 @@ std::size_t ident_length(std::string_view s) {
   return n;
 }
 
-// True when `s` starts with `identifier:` (how a name:value pair opens in the inline layout).
-bool starts_with_pair(std::string_view s) {
+// The length of the name when `s` starts with `identifier:` (how a name:value pair opens in the
+// inline layout), else 0.
+std::size_t pair_name_length(std::string_view s) {
   std::size_t n = ident_length(s);
-  return n > 0 && n < s.size() && s[n] == ':';
+  return n > 0 && n < s.size() && s[n] == ':' ? n : 0;
 }
+bool starts_with_pair(std::string_view s) { return pair_name_length(s) > 0; }
 
 // Number syntax: [+-] digits [. digits] [e [+-] digits] with at least one digit in the mantissa.
 // The scan also collects the mantissa's digits, so that plain decimals need no second pass.
@@ -375,8 +377,10 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
     out.trace.push_back({otherwise, std::string(otherwise == TraceLine::Kind::Partial ? kept : trim_right(kept))});
     return;
   }
+  std::size_t next_name = 0;  // the length of the name at i, when the previous value's end measured it
   while (i < text.size()) {
-    std::size_t n = ident_length(text.substr(i));
+    std::size_t n = next_name > 0 ? next_name : ident_length(text.substr(i));
+    next_name = 0;
     if (n == 0 || i + n >= text.size() || text[i + n] != ':')
       fail(column + i, "expected `name:value`");
     std::string_view name = text.substr(i, n);
@@ -398,8 +402,9 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
       for (std::size_t k = v; k < text.size(); ++k) {
         if (is_blank(text[k])) {
           std::size_t m = skip_blanks(text, k);
-          if (m < text.size() && starts_with_pair(text.substr(m))) {
+          if (std::size_t name_length = pair_name_length(text.substr(m)); name_length > 0) {
             end = k;
+            next_name = name_length;  // i will be m: skip_blanks(text, end)
             break;
           }
         }

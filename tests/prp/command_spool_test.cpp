@@ -1,0 +1,73 @@
+// The temporary file of commands that procedure generation replays: every command comes back as
+// written, from the start or from any offset, also when writes and reads alternate.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "prp/command_spool.hpp"
+#include "stream_helpers.hpp"
+
+using namespace prp_test;
+using toolpath::ChangeFlag;
+using toolpath::Command;
+using toolpath::Value;
+
+namespace {
+
+std::vector<Command> samples() {
+  Command arc = command("@arc", {{"xpos", Value::make_numeric(-45.476, ChangeFlag::Changed)},
+                                 {"tool_number", Value::make_integer(-12, ChangeFlag::Unchanged)},
+                                 {"arc_direction", word("CCW")},
+                                 {"job_name", Value::make_string("it's a job")},
+                                 {"empty", Value::make_string("")},
+                                 {"flag", Value::make_logical(true)},
+                                 {"off", Value::make_logical(false)}},
+                        7);
+  arc.depth = 2;
+  arc.trace = {{toolpath::TraceLine::Kind::Output, "N10 G3 X1."}, {toolpath::TraceLine::Kind::Partial, ""}};
+  Command bare;
+  bare.name = "@end_of_file";
+  bare.index = 123456789012;
+  bare.depth = 0;
+  Command long_name = command(std::string(300, 'n'), {{std::string(70000, 'p').c_str(), num(1e300)}}, 8);
+  return {arc, bare, long_name, command("@line", {{"xpos", num(0.1)}, {"ypos", num(-0.0)}}, 9)};
+}
+
+TEST(CommandSpool, ReadsBackWhatWasWritten) {
+  prp::CommandSpool spool;
+  const auto commands = samples();
+  std::vector<std::int64_t> offsets;
+  for (const auto& c : commands) offsets.push_back(spool.write(c));
+  spool.seek(0);
+  Command c;
+  for (const auto& expected : commands) {
+    ASSERT_TRUE(spool.read(c));
+    EXPECT_EQ(c, expected);
+  }
+  EXPECT_FALSE(spool.read(c));
+  for (std::size_t i = commands.size(); i-- > 0;) {  // from any offset, in any order
+    spool.seek(offsets[i]);
+    ASSERT_TRUE(spool.read(c));
+    EXPECT_EQ(c, commands[i]);
+  }
+}
+
+TEST(CommandSpool, WritesAndReadsAlternate) {
+  prp::CommandSpool spool;
+  const auto commands = samples();
+  Command c;
+  spool.write(commands[0]);
+  spool.seek(0);
+  ASSERT_TRUE(spool.read(c));
+  EXPECT_EQ(c, commands[0]);
+  spool.write(commands[1]);  // appends at the end, whatever was read
+  spool.write(commands[2]);
+  ASSERT_TRUE(spool.read(c));  // reading continues where it stopped
+  EXPECT_EQ(c, commands[1]);
+  ASSERT_TRUE(spool.read(c));
+  EXPECT_EQ(c, commands[2]);
+  EXPECT_FALSE(spool.read(c));
+}
+
+}  // namespace
