@@ -151,9 +151,12 @@ public:
     RunSummary summary;
     sink_.command_name = "@init_post";
     guarded([&] { interpreter_.start(); });
+    // Three stages overlap: reading the job, the PRP's filters, the post. Reading gets a thread of
+    // its own because a filter may have to take in the whole job before it hands anything on
+    // (gen_procs: @start_of_file names the last subroutine label).
     StreamCommands stream(input);
-    auto filtered = prp::build_filter_chain(engine_.machine(), stream);
-    // Reading and filtering run on a second thread, overlapping with the post.
+    toolpath::PrefetchSource read_ahead(stream);
+    auto filtered = prp::build_filter_chain(engine_.machine(), read_ahead);
     toolpath::PrefetchSource prefetched(*filtered);
     toolpath::LookaheadSource lookahead(prefetched);
     toolpath::Command command;
