@@ -3,7 +3,8 @@
 //
 //   build-release/bin/post_bench [--motions N] [--post P.gpp] [--prp P.prp] [--job FILE]
 //
-// Run it from the repository root, in a Release build. Figures: docs/performance.md.
+// Run it from the repository root, in a Release build. The run itself uses three threads (reader,
+// PRP filters, post). Figures: docs/performance.md.
 #include <fmt/format.h>
 
 #include <unistd.h>
