@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "machines/pikocnc/reader.hpp"
 
 namespace {
@@ -43,7 +45,8 @@ std::string run(const std::string& command) {
 // STRAIGHT_TRAVERSE(x, y, z, ...), STRAIGHT_FEED(x, y, z, ...), ARC_FEED(first, second, c1, c2,
 // rotation, axis_end, ...) in the canonical call trace, converted to millimetres.
 std::vector<Motion> linuxcnc_motion(const std::string& program) {
-  const std::string tools = testing::TempDir() + "rs274.tbl";
+  // One tool table per process: ctest runs these tests in parallel processes.
+  const std::string tools = testing::TempDir() + "rs274-" + std::to_string(::getpid()) + ".tbl";
   std::ofstream(tools) << "T1 P1 D1 Z0 ;\n";
   const std::string trace = run("rs274 -t " + tools + " " + program + " 2>&1 </dev/null");
   std::vector<Motion> out;
