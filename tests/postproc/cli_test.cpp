@@ -6,19 +6,12 @@
 #include <vector>
 
 #include "postproc/cli.hpp"
+#include "tests/support/cli_run.hpp"
 
 namespace {
 
-struct Run {
-  int code;
-  std::string out, err;
-};
-
-Run run(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  int code = postproc::cli::main(args, out, err);
-  return {code, out.str(), err.str()};
-}
+using Run = test_support::CliRun;
+const auto run = test_support::run_cli;
 
 TEST(Cli, ExitCodes) {
   struct Case {

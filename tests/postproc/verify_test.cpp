@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "postproc/cli.hpp"
+#include "tests/support/cli_run.hpp"
 #include "postproc/verify.hpp"
 
 namespace {
@@ -123,23 +124,10 @@ TEST(VerifyCompare, OneSideEndingEarlyIsADivergence) {
   EXPECT_EQ(r.divergence->what, "the NC program ends here; the toolpath goes on");
 }
 
-struct Run {
-  int code;
-  std::string out, err;
-};
+using Run = test_support::CliRun;
+const auto run = test_support::run_cli;
 
-Run run(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  int code = postproc::cli::main(args, out, err);
-  return {code, out.str(), err.str()};
-}
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 TEST(VerifyCli, ShippedSampleMatches) {
   auto r = run({"verify", "--post", "../machines/pikocnc/pikocnc.gpp", "--prp", "../machines/pikocnc/pikocnc.prp",

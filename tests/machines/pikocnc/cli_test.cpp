@@ -8,26 +8,14 @@
 #include <vector>
 
 #include "postproc/cli.hpp"
+#include "tests/support/cli_run.hpp"
 
 namespace {
 
-struct Run {
-  int code;
-  std::string out, err;
-};
+using Run = test_support::CliRun;
+const auto run = test_support::run_cli;
 
-Run run(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = postproc::cli::main(args, out, err);
-  return {code, out.str(), err.str()};
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 TEST(PikoCli, ReadPrintsTheStreamAndWarnings) {
   const auto r = run({"read", "--dialect", "pikocnc", "machines/pikocnc/golden/ignored_words_and_codes/program.nc"});
