@@ -23,7 +23,7 @@ Flow Interpreter::State::run(std::uint32_t procedure, std::uint32_t args_list, s
   for (std::uint32_t i = 0; i < arg_count; ++i) {
     const LocalVariable& l = proc.locals[i];
     const VarRef ref{true, i, l.offset, kNone, 0};
-    assign(stack[base + l.offset], scratch[first_arg + i], ChangeOverride::Compute, &ref);
+    assign(stack[base + l.offset], *scratch[first_arg + i], ChangeOverride::Compute, &ref);
   }
   scratch_top = first_arg;
   if (trace != nullptr && !in_init && trace_level(procedure) >= 1)

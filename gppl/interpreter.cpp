@@ -65,14 +65,18 @@ VariableId Interpreter::add_variable(std::string_view name) {
 
 void Interpreter::assign(VariableId id, const Value& value, ChangeOverride change) {
   State& s = *state_;
-  Cell& c = s.host_cell(id);
-  const bool implicit = id >= s.program.globals.size() || s.program.globals[id].group == Group::Implicit;
   s.current = nullptr;
-  if (implicit && c.typed && c.value.type != value.type) c.typed = false;  // re-typed by the host
+  // The engine calls this for every parameter of every command: the declared variable is looked
+  // up once, and the VarRef (for error messages only) costs nothing to build.
   if (id < s.program.globals.size()) {
-    const VarRef ref{false, id, s.program.globals[id].first_cell, kNone, 0};
+    const GlobalVariable& var = s.program.globals[id];
+    Cell& c = s.globals[var.first_cell];
+    if (var.group == Group::Implicit && c.typed && c.value.type != value.type) c.typed = false;  // re-typed by the host
+    const VarRef ref{false, id, var.first_cell, kNone, 0};
     s.assign(c, value, change, &ref);
   } else {
+    Cell& c = s.host_cell(id);  // a variable the host declared at run time: always implicit
+    if (c.typed && c.value.type != value.type) c.typed = false;
     s.assign(c, value, change, nullptr);
   }
   if (s.trace != nullptr && s.host_assigned.size() < 10000) s.host_assigned.push_back(id);
@@ -153,7 +157,7 @@ void Interpreter::trace_unhandled(std::string_view command) {
   if (key.empty() || key.front() != '@') key.insert(key.begin(), '@');
   const auto it = s.command_trace_level.find(key);
   const int level = it != s.command_trace_level.end() ? it->second : s.default_trace_level;
-  if (level >= 1) s.trace_enter(!command.empty() && command.front() == '@' ? std::string(command) : "@" + std::string(command), 0, level);
+  if (level >= 1) s.trace_enter(!command.empty() && command.front() == '@' ? std::string(command) : std::string("@").append(command), 0, level);
   s.host_assigned.clear();
 }
 

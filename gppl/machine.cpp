@@ -93,10 +93,7 @@ Cell& Interpreter::State::element(const VarRef& ref) {
   return (&cell(ref))[offset];
 }
 
-Value& Interpreter::State::push_scratch() {
-  if (scratch_top == scratch.size()) scratch.emplace_back();
-  return scratch[scratch_top++];
-}
+void Interpreter::State::grow_scratch() { scratch.push_back(std::make_unique<Value>()); }
 
 std::int64_t Interpreter::State::to_integer(const Value& v, const VarRef* ref) const {
   switch (v.type) {
@@ -160,13 +157,14 @@ void Interpreter::State::assign(Cell& target, const Value& v, ChangeOverride cha
   } else {
     switch (cur.type) {
       case Type::Integer: {
-        const std::int64_t x = to_integer(v, ref);
+        // Same type first: the conversion functions are out of line (they may throw).
+        const std::int64_t x = v.type == Type::Integer ? v.integer : to_integer(v, ref);
         differs = cur.integer != x;
         cur.integer = x;
         break;
       }
       case Type::Numeric: {
-        const double x = to_numeric(v, ref);
+        const double x = v.type == Type::Numeric ? v.numeric : to_numeric(v, ref);
         differs = cur.numeric != x;
         cur.numeric = x;
         break;
@@ -174,7 +172,8 @@ void Interpreter::State::assign(Cell& target, const Value& v, ChangeOverride cha
       case Type::Logical: {
         const bool x = v.type == Type::String ? (fail(ErrorCode::NotNumeric, ref ? std::string_view(variable_name(*ref)) : std::string_view{},
                                                       fmt::format("a logical value is required, not the string '{}'", v.text)), false)
-                                              : to_logical(v);
+                                              : v.type == Type::Logical ? v.logical
+                                                                         : to_logical(v);
         differs = cur.logical != x;
         cur.logical = x;
         break;

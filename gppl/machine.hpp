@@ -2,7 +2,7 @@
 // expression scratch stack, the output line and the trace. Internal to gppl/.
 #pragma once
 
-#include <deque>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -49,7 +49,9 @@ struct Interpreter::State {
     std::uint32_t base;
   };
   std::vector<Frame> frames;
-  std::deque<Value> scratch;  // expression temporaries; deque: references stay valid while it grows
+  // Expression temporaries, one heap Value each so that references stay valid while the stack
+  // grows (a deque's indexing cost a division per push on the hot path).
+  std::vector<std::unique_ptr<Value>> scratch;
   std::uint32_t scratch_top = 0;
   std::vector<Value> arguments;  // contiguous argument lists of built-in calls
   std::uint32_t argument_top = 0;
@@ -93,7 +95,11 @@ struct Interpreter::State {
   double to_numeric(const Value& v, const VarRef* ref = nullptr) const;
   bool to_logical(const Value& v) const;
   void reset_cell(Cell& c, Type type) const;
-  Value& push_scratch();
+  Value& push_scratch() {  // inline: several calls per generated item
+    if (scratch_top == scratch.size()) grow_scratch();
+    return *scratch[scratch_top++];
+  }
+  void grow_scratch();
   void pop_scratch() { --scratch_top; }
 
   // evaluate.cpp

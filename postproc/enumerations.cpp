@@ -3,14 +3,28 @@
 namespace postproc {
 namespace {
 
+char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+
 std::string lower(std::string_view s) {
   std::string r(s);
-  for (char& c : r)
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  for (char& c : r) c = lower(c);
   return r;
 }
 
 }  // namespace
+
+std::size_t Enumerations::NoCaseHash::operator()(std::string_view s) const {
+  std::size_t h = 14695981039346656037ull;  // FNV-1a over the lower-case bytes
+  for (char c : s) h = (h ^ static_cast<unsigned char>(lower(c))) * 1099511628211ull;
+  return h;
+}
+
+bool Enumerations::NoCaseEqual::operator()(std::string_view a, std::string_view b) const {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (lower(a[i]) != lower(b[i])) return false;
+  return true;
+}
 
 Enumerations::Enumerations(const std::vector<std::string>& drill_type_names) {
   // Codes count from 1 inside each group, so that a variable never assigned (0) equals no constant.
@@ -66,10 +80,9 @@ void Enumerations::declare_group(std::initializer_list<std::string_view> words, 
 }
 
 std::int64_t Enumerations::code(std::string_view word) {
-  std::string key = lower(word);
-  if (auto it = by_lower_name_.find(key); it != by_lower_name_.end()) return it->second;
+  if (auto it = by_lower_name_.find(word); it != by_lower_name_.end()) return it->second;
   std::int64_t c = next_unknown_code_++;
-  by_lower_name_.emplace(std::move(key), c);
+  by_lower_name_.emplace(lower(word), c);
   return c;
 }
 

@@ -31,7 +31,17 @@ public:
 private:
   void declare_group(std::initializer_list<std::string_view> words, std::int64_t first_code);
   std::vector<Constant> constants_;
-  std::unordered_map<std::string, std::int64_t> by_lower_name_;
+  // Keyed by the lower-case word; hashed and compared without case, so that code() looks a
+  // stream's word up as it is, without building a lower-case copy (it runs for every command).
+  struct NoCaseHash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view s) const;
+  };
+  struct NoCaseEqual {
+    using is_transparent = void;
+    bool operator()(std::string_view a, std::string_view b) const;
+  };
+  std::unordered_map<std::string, std::int64_t, NoCaseHash, NoCaseEqual> by_lower_name_;
   std::int64_t next_unknown_code_ = 1000;
 };
 
