@@ -13,7 +13,7 @@ std::vector<OptionSpec> engine_option_specs() {
       {"--post", "", true, "the GPP post (.gpp), required"},
       {"--prp", "", true, "the machine parameters (.prp)"},
       {"--include", "-I", true, "a folder where `inc` files are looked up"},
-      {"--units", "", true, "metric (default) or inch: which half of the PRP's pairs applies"},
+      {"--units", "", true, "metric or inch: which half of the PRP's pairs applies (default: the job's inch_system)"},
       {"--no-modal-reset", "", false, "keep modal memory across subroutine boundaries"},
   };
 }
@@ -24,11 +24,15 @@ EngineOptions engine_options(const Arguments& args) {
   if (o.post.empty()) throw UsageError{"--post is required"};
   o.prp = args.value("--prp");
   if (args.has("--include")) o.include_paths.push_back(args.value("--include"));
-  std::string units = args.value("--units", "metric");
-  if (units == "inch")
-    o.units = prp::Units::Inch;
-  else if (units != "metric")
-    throw UsageError{"--units must be metric or inch, not `" + units + "`"};
+  if (args.has("--units")) {
+    std::string units = args.value("--units");
+    if (units == "inch")
+      o.units = prp::Units::Inch;
+    else if (units == "metric")
+      o.units = prp::Units::Metric;
+    else
+      throw UsageError{"--units must be metric or inch, not `" + units + "`"};
+  }
   o.reset_modal_memory_at_subroutines = !args.has("--no-modal-reset");
   return o;
 }

@@ -34,6 +34,15 @@ private:
   toolpath::CommandSource& inner_;
 };
 
+// The unit system a job states in its @start_of_file (`inch_system`); metric when it does not.
+prp::Units job_units(const toolpath::Command* first) {
+  if (!first || !iequals(first->name, "@start_of_file")) return prp::Units::Metric;
+  const toolpath::Value* inch = first->find("inch_system");
+  if (!inch) return prp::Units::Metric;
+  bool is_inch = inch->kind == toolpath::ValueKind::Logical ? inch->logical : inch->as_number() != 0;
+  return is_inch ? prp::Units::Inch : prp::Units::Metric;
+}
+
 struct TransparentHash {
   using is_transparent = void;
   std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
@@ -155,8 +164,13 @@ public:
     // its own because a filter may have to take in the whole job before it hands anything on
     // (gen_procs: @start_of_file names the last subroutine label).
     StreamCommands stream(input);
-    toolpath::PrefetchSource read_ahead(stream);
-    auto filtered = prp::build_filter_chain(engine_.machine(), read_ahead);
+    // The PRP half follows the job's unit system, which the first command states; it must be
+    // chosen before the filters compare anything against the PRP's tolerances.
+    toolpath::LookaheadSource first(stream);
+    summary.units = engine_.options().units.value_or(job_units(first.peek()));
+    machine_ = &engine_.machine(summary.units);
+    toolpath::PrefetchSource read_ahead(first);
+    auto filtered = prp::build_filter_chain(*machine_, read_ahead);
     toolpath::PrefetchSource prefetched(*filtered);
     toolpath::LookaheadSource lookahead(prefetched);
     toolpath::Command command;
@@ -359,7 +373,7 @@ private:
       low = low == 0 ? l : std::min(low, l);
       high = std::max(high, l);
     }
-    std::int64_t first_label = prp::procedure_numbers(engine_.machine()).dflt.value_or(1);
+    std::int64_t first_label = prp::procedure_numbers(*machine_).dflt.value_or(1);
     std::int64_t user_procs = 0;
     if (auto id = interpreter_.find_variable("num_user_procs")) user_procs = interpreter_.value(*id).integer;
     std::int64_t first_user = high > 0 ? high + 1 : first_label;
@@ -371,6 +385,7 @@ private:
   }
 
   const Engine& engine_;
+  const prp::MachineParameters* machine_ = nullptr;  // the half of the PRP this run uses
   const RunOptions& options_;
   OutputFiles& files_;
   Enumerations enums_;
@@ -387,24 +402,30 @@ private:
 }  // namespace
 
 Engine::Engine(EngineOptions options) : options_(std::move(options)) {
-  prp_ = options_.prp.empty() ? prp::defaults(options_.units) : prp::load_file(options_.prp, options_.units);
+  auto load = [&](prp::Units units) { return options_.prp.empty() ? prp::defaults(units) : prp::load_file(options_.prp, units); };
+  prp_metric_ = load(prp::Units::Metric);
+  prp_inch_ = load(prp::Units::Inch);
   Enumerations enums(drill_cycle_names());
   gppl::CompileOptions compile;
-  compile.host_variables = host_variables(enums, prp_);
+  compile.host_variables = host_variables(enums, machine());
   compile.include_paths = options_.include_paths;
   program_ = gppl::compile_file(options_.post, compile);
 }
 
 Engine::~Engine() = default;
 
+const prp::MachineParameters& Engine::machine(prp::Units units) const {
+  return units == prp::Units::Inch ? prp_inch_ : prp_metric_;
+}
+
 std::string Engine::file_extension() const {
-  const prp::Parameter* p = prp_.find("gpp_file_ext");
+  const prp::Parameter* p = machine().find("gpp_file_ext");
   return p ? p->text : std::string();
 }
 
 std::vector<std::string> Engine::drill_cycle_names() const {
   std::vector<std::string> names;
-  for (const auto* r : prp_.records("drill_type")) names.push_back(r->name);
+  for (const auto* r : machine().records("drill_type")) names.push_back(r->name);
   return names;
 }
 

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -36,7 +37,9 @@ namespace postproc {
 struct EngineOptions {
   std::string post;                        // the .gpp file
   std::string prp;                         // the .prp file; empty: none
-  prp::Units units = prp::Units::Metric;   // which half of the PRP's metric/inch pairs applies
+  // Which half of the PRP's metric/inch pairs applies. Unset: the job's own unit system, the
+  // `inch_system` of the stream's first command (@start_of_file); metric when it has none.
+  std::optional<prp::Units> units;
   std::vector<std::string> include_paths;  // where `inc` files are looked up besides the post's folder
   // Modal memory is forgotten where a subroutine body starts and after a subroutine call, because
   // the machine state there is not the one the previous block left (docs/engine.md).
@@ -79,6 +82,7 @@ struct RunSummary {
   std::size_t commands = 0;  // stream commands read
   std::size_t skipped = 0;   // commands the post has no procedure for
   std::size_t lines = 0;     // lines written
+  prp::Units units = prp::Units::Metric;  // the PRP half the run used
 };
 
 // An error during a run: names the command (index and name) and, for errors of the post, the GPP
@@ -97,7 +101,10 @@ public:
   // Posts `input` into `output` (not committed: the caller commits on success).
   RunSummary run(toolpath::CommandSource& input, OutputFiles& output, const RunOptions& options) const;
 
-  const prp::MachineParameters& machine() const { return prp_; }
+  // The PRP with the half of its metric/inch pairs that `units` selects; without an argument, the
+  // half of EngineOptions::units (metric when unset). Both halves are loaded at construction.
+  const prp::MachineParameters& machine(prp::Units units) const;
+  const prp::MachineParameters& machine() const { return machine(options_.units.value_or(prp::Units::Metric)); }
   // The output file extension (`gpp_file_ext`), empty when the PRP has none.
   std::string file_extension() const;
   // The drill-cycle names of the PRP (`drill_type = <name> ...`), in file order.
@@ -106,7 +113,7 @@ public:
 
 private:
   EngineOptions options_;
-  prp::MachineParameters prp_;
+  prp::MachineParameters prp_metric_, prp_inch_;
   std::shared_ptr<const gppl::Program> program_;
 };
 

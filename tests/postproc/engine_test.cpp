@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -25,10 +26,16 @@ protected:
   void TearDown() override { fs::remove_all(dir); }
 
   // Posts `trace` with `post`; returns the main program (stream output) or throws.
-  std::string post(const std::string& gpp, const std::string& trace) {
+  std::string post(const std::string& gpp, const std::string& trace, const std::string& prp = {},
+                   std::optional<prp::Units> units = {}) {
     std::ofstream(dir / "p.gpp") << gpp;
     postproc::EngineOptions engine_options;
     engine_options.post = (dir / "p.gpp").string();
+    if (!prp.empty()) {
+      std::ofstream(dir / "p.prp") << prp;
+      engine_options.prp = (dir / "p.prp").string();
+    }
+    engine_options.units = units;
     postproc::Engine engine(engine_options);
     std::istringstream in(trace);
     toolpath::TraceReader reader(in, "job.trace");
@@ -60,6 +67,34 @@ TEST_F(EngineTest, ParametersChangeFlagsAndCommandNames) {
             "@line @line @line Y3.\n"
             "@line @line @tmatrix X1.\n"
             "@tmatrix @line  X5.\n");
+}
+
+// The PRP half follows the job's `inch_system`, read from @start_of_file before the filters run;
+// an explicit unit choice overrides it. dflt_start/dflt_end fill the positions the job leaves open.
+TEST_F(EngineTest, PrpHalfFollowsTheJobsUnitSystem) {
+  const std::string prp =
+      "@pre_processor\n"
+      "dflt_start = 0 200 100, 0 7.8740 3.9371\n"
+      "dflt_end = 10 20 30, 0.3937 0.7874 1.1811\n"
+      "endp\n";
+  const std::string gpp =
+      "@init_post\n  xpos_f = '5.4'\n  ypos_f = '5.4'\n  zpos_f = '5.4'\nendp\n"
+      "@start_program\n  {nl, 'S X', xpos, ' Y', ypos, ' Z', zpos}\nendp\n"
+      "@end_program\n  {nl, 'E X', xpos, ' Y', ypos, ' Z', zpos}\nendp\n";
+  auto job = [](const char* inch_system) {
+    return std::string("@start_of_file\n") + inch_system + "@start_program\n@end_program\n";
+  };
+  const std::string metric = "S X0. Y200. Z100.\nE X10. Y20. Z30.\n";
+  const std::string inch = "S X0. Y7.874 Z3.9371\nE X0.3937 Y0.7874 Z1.1811\n";
+  struct Case {
+    const char* inch_system;
+    std::optional<prp::Units> units;
+    std::string expected;
+  };
+  for (const Case& c : {Case{"inch_system : TRUE\n", {}, inch}, Case{"inch_system : FALSE\n", {}, metric},
+                        Case{"", {}, metric}, Case{"inch_system : TRUE\n", prp::Units::Metric, metric},
+                        Case{"inch_system : FALSE\n", prp::Units::Inch, inch}})
+    EXPECT_EQ(post(gpp, job(c.inch_system), prp, c.units), c.expected) << c.inch_system;
 }
 
 TEST_F(EngineTest, DirectivesSplitTheOutput) {
