@@ -56,6 +56,7 @@ constexpr SystemVariable kSystem[] = {
     {"blknum_max", Type::Integer, false, "", 32000},
     {"skipline", Type::Logical, false, "", 1},
     {"num_user_procs", Type::Integer, false, "", 1},
+    {"print_file_size", Type::Integer, false, "", 0},  // 1: the engine replaces `$$file_size$$`
     {"clear_change_after_gen", Type::Logical, false, "", 0},
     // special and read-only (12.3)
     {"PI", Type::Numeric, true, "", 3.14159265358979323846},

@@ -185,6 +185,8 @@ public:
     }
     sink_.end_commands();
     guarded([&] { interpreter_.finish(); });
+    if (auto id = interpreter_.find_variable("print_file_size"); id && interpreter_.value(*id).integer == 1)
+      files_.replace_file_size_placeholders();
     if (files_.main_path().empty()) name_main_file(default_main_name(input_stem(), engine_.file_extension()));
     summary.lines = sink_.lines;
     return summary;

@@ -181,6 +181,61 @@ void OutputFiles::copy_into_current(std::string_view name, const LineCallback& c
   if (copied_line && !partial.empty()) copied_line(partial);
 }
 
+namespace {
+
+constexpr std::string_view kFileSize = "$$file_size$$";
+
+std::size_t decimal_digits(std::uintmax_t n) {
+  std::size_t d = 1;
+  while (n >= 10) n /= 10, ++d;
+  return d;
+}
+
+// The size the file has once each of its `count` placeholders is replaced by that size: the smallest
+// fixed point of size = base - count * placeholder + count * digits(size).
+std::uintmax_t self_consistent_size(std::uintmax_t base, std::uintmax_t count) {
+  std::uintmax_t without = base - count * kFileSize.size();
+  for (std::size_t digits = 1; digits <= 20; ++digits) {
+    std::uintmax_t size = without + count * digits;
+    if (decimal_digits(size) == digits) return size;
+  }
+  return base;  // unreachable for real sizes
+}
+
+}  // namespace
+
+void OutputFiles::replace_file_size_placeholders() {
+  for (auto& e : entries_) {
+    if (e.deleted) continue;
+    close_handle(e);
+    std::uintmax_t count = 0;
+    {
+      std::ifstream in(e.temp_path, std::ios::binary);
+      for (std::string line; std::getline(in, line);)
+        for (auto at = line.find(kFileSize); at != std::string::npos; at = line.find(kFileSize, at + kFileSize.size()))
+          ++count;
+    }
+    if (count == 0) continue;
+    const std::string size = std::to_string(self_consistent_size(fs::file_size(e.temp_path), count));
+    fs::path rewritten = e.temp_path;
+    rewritten += ".size";
+    {
+      std::ifstream in(e.temp_path, std::ios::binary);
+      std::ofstream out(rewritten, std::ios::binary);
+      for (std::string line; std::getline(in, line);) {
+        for (auto at = line.find(kFileSize); at != std::string::npos; at = line.find(kFileSize, at + size.size()))
+          line.replace(at, kFileSize.size(), size);
+        out << line;
+        if (!in.eof()) out << '\n';
+      }
+      if (!out.flush()) io_failure("write", rewritten);
+    }
+    fs::rename(rewritten, e.temp_path);
+  }
+  if (!entries_.front().deleted) open_handle(entries_.front(), "ab");
+  if (!entries_[current_].deleted) open_handle(entries_[current_], "ab");
+}
+
 std::string OutputFiles::display_name(const Entry& e) const {
   if (!e.name.empty()) return e.name;
   return e.final_path.empty() ? std::string("(main file)") : e.final_path.filename().string();

@@ -43,6 +43,10 @@ public:
   std::string current_name() const;
   bool current_is_main() const { return current_ == 0; }
 
+  // `print_file_size = 1`: replaces each `$$file_size$$` in every file by that file's final size in
+  // bytes (the size with the numbers written in, line ends included). Streams: one pass to count, one
+  // to rewrite. Call after the last line, before commit.
+  void replace_file_size_placeholders();
   // Moves every file onto its final name and removes the files the run deleted. Returns the paths written.
   std::vector<std::filesystem::path> commit();
   // Writes every file, in the order they were created, to `out`; when there are several, each starts

@@ -97,6 +97,24 @@ TEST_F(EngineTest, PrpHalfFollowsTheJobsUnitSystem) {
     EXPECT_EQ(post(gpp, job(c.inch_system), prp, c.units), c.expected) << c.inch_system;
 }
 
+// print_file_size = 1: every `$$file_size$$` becomes the final size of its file in bytes, the size
+// with the numbers written in (so the digit count is part of the size).
+TEST_F(EngineTest, FileSizePlaceholderIsReplacedWhenAsked) {
+  const std::string trace = "@start_of_file\n@end_of_file\n";
+  struct Case {
+    std::string init, start, expected;
+  };
+  for (const Case& c : {
+           Case{"  print_file_size = 1\n", "  {nl, '(SIZE $$file_size$$)'}\n  {nl, 'M30'}\n", "(SIZE 14)\nM30\n"},
+           Case{"  print_file_size = 1\n", "  {nl, '$$file_size$$ $$file_size$$'}\n", "4 4\n"},
+           Case{"  print_file_size = 1\n", "  {nl, 'no placeholder'}\n", "no placeholder\n"},
+           Case{"", "  {nl, '(SIZE $$file_size$$)'}\n", "(SIZE $$file_size$$)\n"},
+       })
+    EXPECT_EQ(post("@init_post\n  numeric_def_f = '5.3'\n" + c.init + "endp\n@start_of_file\n" + c.start + "endp\n", trace),
+              c.expected)
+        << c.start;
+}
+
 TEST_F(EngineTest, DirectivesSplitTheOutput) {
   const std::string gpp =
       "@start_of_file\n  {'%'}\nendp\n"
