@@ -24,11 +24,7 @@ std::vector<Command> quarter(const char* name, std::initializer_list<Pair> extra
           arc};
 }
 
-std::vector<Command> run(std::vector<Command> in, const ArcSettings& s) {
-  ListSource source(std::move(in));
-  prp::ArcFilter filter(source, s);
-  return drain(filter);
-}
+const auto run = run_arc_filter;
 
 TEST(Arc5x, LinearisedWithTheRotaryAxesTurningInStep) {
   ArcSettings s;

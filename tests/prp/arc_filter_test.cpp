@@ -29,11 +29,7 @@ std::vector<Command> helix_job() {
                   2)};
 }
 
-std::vector<Command> run(std::vector<Command> in, const ArcSettings& s) {
-  ListSource source(std::move(in));
-  prp::ArcFilter filter(source, s);
-  return drain(filter);
-}
+const auto run = run_arc_filter;
 
 TEST(ArcFilter, HelixLinearisedIn27EqualStepsAsTheManualPrints) {
   ArcSettings s;

@@ -67,11 +67,7 @@ std::vector<Command> circle_with_sets() {
   return {motion("@rapid_move", {26, -4, 10}, sets), motion("@line", {26, -4, -6}, sets), arc};
 }
 
-std::vector<Command> run(std::vector<Command> in, const ArcSettings& s) {
-  ListSource source(std::move(in));
-  prp::ArcFilter filter(source, s);
-  return drain(filter);
-}
+const auto run = run_arc_filter;
 
 TEST(KinematicSets, QuadrantCircleWithRotatedAndShiftedSets) {
   ArcSettings s;

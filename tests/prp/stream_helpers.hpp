@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "prp/arc_filter.hpp"
 #include "toolpath/command.hpp"
 #include "toolpath/source.hpp"
 
@@ -48,6 +49,13 @@ inline toolpath::Value word(const char* w) { return toolpath::Value::make_enum(w
 inline double get(const toolpath::Command& c, const char* name) {
   const toolpath::Value* v = c.find(name);
   return v ? v->as_number() : -999999.0;
+}
+
+// Runs `in` through one ArcFilter with settings `s` and returns everything it produced.
+inline std::vector<toolpath::Command> run_arc_filter(std::vector<toolpath::Command> in, const prp::ArcSettings& s) {
+  ListSource source(std::move(in));
+  prp::ArcFilter filter(source, s);
+  return drain(filter);
 }
 
 }  // namespace prp_test
