@@ -1,6 +1,8 @@
 #include "machines/pikocnc/reader.hpp"
 
 #include <fstream>
+#include <initializer_list>
+#include <utility>
 
 #include "machines/pikocnc/interpreter.hpp"
 
@@ -19,9 +21,69 @@ std::unique_ptr<PikoReader> PikoReader::open(const std::string& path, Options op
   return reader;
 }
 
-bool PikoReader::next(toolpath::Command& out) {
+bool PikoReader::pull(toolpath::Command& out, std::size_t& line) {
   if (!interpreter_->run()) return false;
-  return interpreter_->emitter().pop(out, line_);
+  return interpreter_->emitter().pop(out, line);
+}
+
+bool PikoReader::next(toolpath::Command& out) {
+  if (!pending_.empty()) {
+    std::swap(out, pending_.front().command);
+    line_ = pending_.front().line;
+    pending_.pop_front();
+  } else if (!pull(out, line_)) {
+    return false;
+  }
+  if (out.name == "@change_tool" && !out.find("silent")) complete_tool_change(out);
+  return true;
+}
+
+namespace {
+
+bool is_one_of(const toolpath::Command& c, std::initializer_list<std::string_view> names) {
+  for (auto n : names)
+    if (c.name == n) return true;
+  return false;
+}
+
+}  // namespace
+
+void PikoReader::complete_tool_change(toolpath::Command& change) {
+  // Far enough for any tool-change sequence (messages, spindle, coolant, offsets), small enough
+  // that a program that never moves after M6 costs nothing noticeable.
+  constexpr std::size_t kLookahead = 256;
+  change.set("first_tool", toolpath::Value::make_logical(!seen_tool_));
+  seen_tool_ = true;
+  bool spin_known = false, direction_known = false;
+  // Looks at one following command; false once the search is over.
+  auto look = [&](const toolpath::Command& c) {
+    if (is_one_of(c, {"@rapid_move", "@line", "@arc"})) {
+      for (auto [from, to] : {std::pair{"xpos", "xnext"}, {"ypos", "ynext"}, {"zpos", "znext"}})
+        if (const auto* v = c.find(from)) change.set(to, *v);
+      return false;
+    }
+    if (is_one_of(c, {"@change_tool", "@end_program", "@end_of_file"})) return false;
+    if (!spin_known && is_one_of(c, {"@start_tool", "@m_feed_spin"})) {
+      if (const auto* v = c.find("spin")) {
+        change.set("spin", *v);
+        spin_known = true;
+      }
+    }
+    if (!direction_known && c.name == "@start_tool") {
+      if (const auto* v = c.find("spin_direction")) {
+        change.set("tool_direction", *v);
+        direction_known = true;
+      }
+    }
+    return true;
+  };
+  for (const auto& p : pending_)  // already read ahead for an earlier tool change
+    if (!look(p.command)) return;
+  while (pending_.size() < kLookahead) {
+    Pending p;
+    if (!pull(p.command, p.line)) return;
+    if (!look(pending_.emplace_back(std::move(p)).command)) return;
+  }
 }
 
 const Diagnostics& PikoReader::diagnostics() const { return interpreter_->diagnostics(); }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <deque>
 #include <istream>
 #include <memory>
 #include <string>
@@ -34,8 +35,20 @@ public:
   const std::string& file_name() const;
 
 private:
+  // One command as the interpreter produced it, with its NC line.
+  bool pull(toolpath::Command& out, std::size_t& line);
+  // An NC program says where the tool goes and how fast the spindle turns only after M6; a
+  // @change_tool gets xnext/ynext/znext, spin and tool_direction from the commands that follow it.
+  void complete_tool_change(toolpath::Command& change);
+
+  struct Pending {
+    toolpath::Command command;
+    std::size_t line;
+  };
   std::unique_ptr<std::istream> owned_;
   std::unique_ptr<Interpreter> interpreter_;
+  std::deque<Pending> pending_;  // read ahead for a tool change (bounded)
+  bool seen_tool_ = false;
   std::size_t line_ = 0;
 };
 
