@@ -331,6 +331,9 @@ std::uint32_t Compiler::reference(const SyntaxNode& variable, Context& ctx, bool
   } else if (find_function(name) != nullptr) {
     error(target ? ErrorCode::InvalidAssignment : ErrorCode::NotDefined, pos, name,
           "a built-in function cannot be used as a variable");
+  } else if (line_function_named(name)) {
+    error(target ? ErrorCode::InvalidAssignment : ErrorCode::NotDefined, pos, name,
+          "start_line and end_line are allowed only as items of a generate statement, as in {' N1=' start_line}");
   } else if (options_.implicit_host_variables) {
     GlobalVariable v;
     v.name = std::string(name);

@@ -69,7 +69,12 @@ void Compiler::generate_item(const SyntaxNode& n, Context& ctx, bool in_group) {
   }
   item.kind = ItemKind::Value;
   item.site = program_->format_sites++;
-  if (operand.is_type<g::variable>()) {
+  if (auto f = line_function_of(operand)) {
+    // start_line/end_line: the host supplies the number (or a placeholder) when the item runs.
+    item.kind = ItemKind::LineFunction;
+    item.a = std::uint32_t(*f);
+    program_->uses_line_functions = true;
+  } else if (operand.is_type<g::variable>()) {
     item.a = expression(operand, ctx);
     item.ref = program_->nodes[item.a].a;
     const VarRef& r = program_->refs[item.ref];
@@ -114,6 +119,17 @@ void Compiler::generate_item(const SyntaxNode& n, Context& ctx, bool in_group) {
     }
   }
   items.push_back(item);
+}
+
+std::optional<LineFunction> Compiler::line_function_of(const SyntaxNode& operand) const {
+  if (!operand.is_type<g::variable>() || operand.children.size() != 1) return std::nullopt;
+  return line_function_named(operand.children[0]->string_view());
+}
+
+std::optional<LineFunction> line_function_named(std::string_view name) {
+  if (same_name(name, "start_line")) return LineFunction::StartLine;
+  if (same_name(name, "end_line")) return LineFunction::EndLine;
+  return std::nullopt;
 }
 
 void Compiler::collect_refs(std::uint32_t node, std::vector<std::uint32_t>& out) const {

@@ -303,6 +303,10 @@ void Compiler::declare_parameters(const ParsedLine& header, std::uint32_t proced
     const SyntaxNode& name = *parameter->children[1];
     const SourcePos pos = node_pos(name, header.pos.file);
     const std::string key = lower(name.string_view());
+    if (line_function_named(key)) {
+      error(ErrorCode::InvalidLocal, pos, {}, fmt::format("'{}' is the name of a built-in function", name.string_view()));
+      continue;
+    }
     if (globals_.count(key) != 0) {
       const GlobalVariable& g = program_->globals[globals_.at(key)];
       error(g.group == Group::Global ? ErrorCode::AlreadyGlobal : ErrorCode::SystemDeclared, pos, g.name);
@@ -351,7 +355,7 @@ void Compiler::declare(const ParsedLine& line, std::uint32_t procedure) {
       error(invalid, pos, {}, "a name has at most 60 characters");
       continue;
     }
-    if (find_function(name) != nullptr) {
+    if (find_function(name) != nullptr || line_function_named(name)) {
       error(invalid, pos, {}, fmt::format("'{}' is the name of a built-in function", name));
       continue;
     }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -68,6 +69,7 @@ private:
   void generate(const SyntaxNode& n, Context& ctx, SourcePos pos);
   void generate_item(const SyntaxNode& n, Context& ctx, bool in_group);
   void collect_refs(std::uint32_t node, std::vector<std::uint32_t>& out) const;
+  std::optional<LineFunction> line_function_of(const SyntaxNode& operand) const;
   std::string literal_text(const SyntaxNode& literal, std::uint32_t file);
   std::optional<std::uint32_t> lookup_global(std::string_view name) const;
 
@@ -83,5 +85,7 @@ private:
 };
 
 std::string lower(std::string_view s);
+// start_line / end_line (case-insensitive): names reserved for the host item functions.
+std::optional<LineFunction> line_function_named(std::string_view name);
 
 }  // namespace gppl

@@ -28,7 +28,9 @@ Flow Interpreter::State::run(std::uint32_t procedure, std::uint32_t args_list, s
   scratch_top = first_arg;
   if (trace != nullptr && !in_init && trace_level(procedure) >= 1)
     trace_enter(proc.name, int(frames.size()), trace_level(procedure));
+  if (program.uses_line_functions) sink.procedure_boundary(procedure, true);  // body structure (start_line)
   const Flow flow = execute(procedure);
+  if (program.uses_line_functions) sink.procedure_boundary(procedure, false);
   frames.pop_back();
   stack_top = base;
   return flow;

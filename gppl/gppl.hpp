@@ -98,13 +98,36 @@ struct LineOrigin {
   int source_line = 0;
 };
 
+using ProcedureId = std::uint32_t;
+
+// `start_line` and `end_line`: host item functions, allowed only as items of a generate statement
+// (gpptool-commands.md 2.8, 2.11). They print the first and last block numbers of the body the
+// running command belongs to (a subroutine, a loop, a turning geometry), which the host knows.
+enum class LineFunction : std::uint8_t { StartLine, EndLine };
+std::string_view name_of(LineFunction f);  // "start_line"
+
 class OutputSink {
 public:
   virtual ~OutputSink() = default;
   // One finished line, without the line terminator. Output directives (`!!open file=X!!`) arrive
   // here too, as plain lines: executing them is the host's job.
   virtual void write_line(std::string_view line, const LineOrigin& origin) = 0;
+
+  // The three hooks below are called only for programs that use start_line/end_line.
+  // A numbered block starts: `nb` wrote block number `number`.
+  virtual void block_numbered(std::int64_t number) { (void)number; }
+  // A procedure starts (`entering`) or ends, whether the host called it or a `call` statement did.
+  virtual void procedure_boundary(ProcedureId procedure, bool entering) { (void)procedure, (void)entering; }
+  // Appends the text of `start_line`/`end_line` to `out`, formatted with the display format `format`
+  // (the item's, else integer_def_f; see format_integer). The host may append a placeholder it
+  // replaces once the number is known. Throws std::runtime_error when the function has no meaning
+  // here (the interpreter reports it at the item with error 404). The default supplies neither.
+  virtual void line_function(LineFunction which, std::string_view format, std::string& out);
 };
+
+// The text of an integer under a display format ("5.0(p)"), exactly as a generate item prints it.
+// Throws Error (without a position) when the format is invalid.
+std::string format_integer(std::int64_t value, std::string_view format);
 
 enum class ChangeOverride : std::uint8_t { Compute, ForceChanged, ForceUnchanged };
 
@@ -112,7 +135,6 @@ enum class ChangeOverride : std::uint8_t { Compute, ForceChanged, ForceUnchanged
 enum class RunResult : std::uint8_t { Normal, Exit, Abort };
 
 using VariableId = std::uint32_t;
-using ProcedureId = std::uint32_t;
 
 class Interpreter {
 public:

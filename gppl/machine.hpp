@@ -124,6 +124,7 @@ struct Interpreter::State {
   void new_block(SourcePos pos);
   void new_line();
   bool group_required(const GenItem& group);
+  void render_line_function(const GenItem& item, std::string& out);  // line_functions.cpp
 
   // trace.cpp
   int trace_level(std::uint32_t procedure) const;

@@ -81,6 +81,7 @@ void Interpreter::State::new_block(SourcePos pos) {
     pop_scratch();
     throw Error(e.number(), program.position(pos), e.text());
   }
+  if (program.uses_line_functions) sink.block_numbered(n);
   v.integer = n + globals[program.slots.blknum_delta].value.integer;
   assign(number, v, ChangeOverride::Compute, nullptr);
   pop_scratch();
@@ -204,6 +205,11 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
         if (clear_change && item.ref != kNone) element(program.refs[item.ref]).changed = false;
         break;
       }
+      case ItemKind::LineFunction:
+        piece.clear();
+        render_line_function(item, piece);
+        append(piece);
+        break;
       case ItemKind::Group: {
         const std::uint32_t members = item.a;
         if (group_required(item)) {

@@ -74,7 +74,8 @@ struct Node {
 };
 
 // Generate items (6.1). A group item is followed by its `count` member items.
-enum class ItemKind : std::uint8_t { NewBlock, NewLine, Col, ColRel, Text, Value, Group };
+// LineFunction: `start_line`/`end_line`, whose text the host supplies (a is the LineFunction).
+enum class ItemKind : std::uint8_t { NewBlock, NewLine, Col, ColRel, Text, Value, Group, LineFunction };
 enum class FormatKind : std::uint8_t { Default, Constant, Dynamic };
 
 struct GenItem {
@@ -142,6 +143,7 @@ public:
   std::optional<std::uint32_t> init_post;
   std::vector<std::uint32_t> init_inc;  // one per file that defines it, in inclusion order
   SystemSlots slots{};
+  bool uses_line_functions = false;  // start_line/end_line appear: the sink's structure hooks are called
   std::vector<std::string> warnings;
 
   std::unordered_map<std::string, std::uint32_t> global_index;     // lower-case name -> globals
