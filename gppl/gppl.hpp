@@ -88,6 +88,9 @@ std::shared_ptr<const Program> compile_file(const std::string& path, const Compi
 std::shared_ptr<const Program> compile_source(std::string_view text, const std::string& file_name,
                                               const CompileOptions& options);
 
+// True when the post uses start_line/end_line (the sink's structure hooks are then called).
+bool uses_line_functions(const Program& program);
+
 // Warnings found while compiling (implicit host variables, ...), "file:line:col: warning: text".
 const std::vector<std::string>& warnings(const Program& program);
 
@@ -122,7 +125,8 @@ public:
   // (the item's, else integer_def_f; see format_integer). The host may append a placeholder it
   // replaces once the number is known. Throws std::runtime_error when the function has no meaning
   // here (the interpreter reports it at the item with error 404). The default supplies neither.
-  virtual void line_function(LineFunction which, std::string_view format, std::string& out);
+  // `item` is where the item stands in the post, for the host's messages.
+  virtual void line_function(LineFunction which, std::string_view format, const Position& item, std::string& out);
 };
 
 // The text of an integer under a display format ("5.0(p)"), exactly as a generate item prints it.

@@ -17,8 +17,10 @@ constexpr std::string_view kIntegerDefault = "5.0(p)";
 
 std::string_view name_of(LineFunction f) { return f == LineFunction::StartLine ? "start_line" : "end_line"; }
 
-void OutputSink::line_function(LineFunction which, std::string_view format, std::string& out) {
-  (void)format, (void)out;
+bool uses_line_functions(const Program& program) { return program.uses_line_functions; }
+
+void OutputSink::line_function(LineFunction which, std::string_view format, const Position& item, std::string& out) {
+  (void)format, (void)item, (void)out;
   throw std::runtime_error(fmt::format("this host does not supply {}", name_of(which)));
 }
 
@@ -42,7 +44,7 @@ void Interpreter::State::render_line_function(const GenItem& item, std::string& 
   if (spec.empty()) spec = kIntegerDefault;
   (void)cached(format_sites[item.site], spec, item.pos);  // an invalid format is reported at the item
   try {
-    sink.line_function(which, spec, out);
+    sink.line_function(which, spec, program.position(item.pos), out);
   } catch (const Error&) {
     throw;
   } catch (const std::runtime_error& e) {

@@ -6,6 +6,7 @@
 
 #include "postproc/cli.hpp"
 #include "postproc/cli_support.hpp"
+#include "postproc/slot_marker.hpp"
 
 namespace postproc::cli {
 namespace {
@@ -19,13 +20,19 @@ public:
       line_ = 0;
       out_ << "==> " << file_ << " <==\n";
     }
-    std::string left = e.directive ? fmt::format("     {}", e.text) : fmt::format("{:>4} {}", ++line_, e.text);
+    // A number known only later (start_line/end_line) shows as {?N} until its line below.
+    const std::string text = slot::readable(e.text);
+    std::string left = e.directive ? fmt::format("     {}", text) : fmt::format("{:>4} {}", ++line_, text);
     std::string right;
     if (!e.origin.command.empty()) right = fmt::format("#{} {}", e.origin.command_index, e.origin.command);
     if (!e.origin.procedure.empty())
       right += fmt::format("{}{} ({}:{})", right.empty() ? "" : " -> ", e.origin.procedure, post_, e.origin.source_line);
     if (e.directive) right += "  [directive]";
     out_ << fmt::format("{:<44} | {}\n", left, right);
+  }
+
+  void on_slot_filled(std::uint32_t slot, std::string_view text) override {
+    out_ << fmt::format("     {{?{}}} = {}\n", slot, text);
   }
 
 private:

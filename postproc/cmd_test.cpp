@@ -33,6 +33,7 @@ public:
     }
     comparer_.produced(mode_ == Mode::File ? main_name_ : std::string(e.file), e.text, e.origin);
   }
+  void on_slot_filled(std::uint32_t slot, std::string_view text) override { comparer_.filled(slot, text); }
   std::string main_name_;
 
 private:

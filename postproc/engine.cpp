@@ -10,6 +10,7 @@
 #include "postproc/directive.hpp"
 #include "postproc/enumerations.hpp"
 #include "postproc/host_variables.hpp"
+#include "postproc/line_numbers.hpp"
 #include "postproc/parameter_table.hpp"
 #include "postproc/structure.hpp"
 #include "toolpath/prefetch.hpp"
@@ -100,6 +101,15 @@ public:
     }
   }
 
+  // start_line/end_line: the interpreter's structure hooks (called only for posts that use them).
+  void block_numbered(std::int64_t number) override { line_numbers->block_numbered(number); }
+  void procedure_boundary(gppl::ProcedureId id, bool entering) override { line_numbers->procedure_boundary(id, entering); }
+  void line_function(gppl::LineFunction which, std::string_view format, const gppl::Position& item,
+                     std::string& out) override {
+    line_numbers->line_function(which, format, item, out);
+  }
+  LineNumbers* line_numbers = nullptr;
+
   // After the last command: the lines still open belong to the command that started them.
   void end_commands() {
     command_name = {};
@@ -135,7 +145,13 @@ public:
         files_(files),
         enums_(engine.drill_cycle_names()),
         sink_(files, options.observer),
-        interpreter_(std::move(program), sink_) {
+        uses_line_functions_(gppl::uses_line_functions(*program)),
+        interpreter_(std::move(program), sink_),
+        line_numbers_(interpreter_, files, options.observer, [this] {
+          return sink_.command_name.empty() ? std::string()
+                                            : fmt::format("command #{} {}", sink_.command_index, sink_.command_name);
+        }) {
+    sink_.line_numbers = &line_numbers_;
     interpreter_.set_trace_stream(options.trace);
     interpreter_.set_limits(engine.options().max_loop_iterations, engine.options().max_call_depth);
     for (const auto& c : enums_.constants())
@@ -185,8 +201,9 @@ public:
     }
     sink_.end_commands();
     guarded([&] { interpreter_.finish(); });
-    if (auto id = interpreter_.find_variable("print_file_size"); id && interpreter_.value(*id).integer == 1)
-      files_.replace_file_size_placeholders();
+    if (uses_line_functions_) guarded([&] { line_numbers_.finish(); });
+    auto print_file_size = interpreter_.find_variable("print_file_size");
+    guarded([&] { files_.finish_placeholders(print_file_size && interpreter_.value(*print_file_size).integer == 1); });
     if (files_.main_path().empty()) name_main_file(default_main_name(input_stem(), engine_.file_extension()));
     summary.lines = sink_.lines;
     return summary;
@@ -346,6 +363,7 @@ private:
 
     if (!command_info.procedure) {
       ++summary.skipped;
+      if (uses_line_functions_) line_numbers_.command_without_procedure(command.name);
       interpreter_.trace_unhandled(command.name);
     } else if (interpreter_.call(*command_info.procedure) == gppl::RunResult::Abort) {
       throw std::runtime_error("the post stopped the run (`abort` in " + command.name + ")");
@@ -392,7 +410,9 @@ private:
   OutputFiles& files_;
   Enumerations enums_;
   Sink sink_;
+  bool uses_line_functions_;
   gppl::Interpreter interpreter_;
+  LineNumbers line_numbers_;
   ProgramStructure structure_;
   std::optional<gppl::VariableId> prev_command_, current_command_, next_command_;
   std::vector<std::string> drill_parameters_;

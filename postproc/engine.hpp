@@ -61,6 +61,9 @@ class LineObserver {
 public:
   virtual ~LineObserver() = default;
   virtual void on_line(const LineEvent& event) = 0;
+  // A line may carry placeholders for numbers known only later (start_line/end_line): markers
+  // postproc/slot_marker.hpp describes. This gives a placeholder's final text once it is known.
+  virtual void on_slot_filled(std::uint32_t slot, std::string_view text) { (void)slot, (void)text; }
 };
 
 struct RunOptions {

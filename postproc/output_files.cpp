@@ -111,7 +111,10 @@ void OutputFiles::switch_to(std::size_t index) {
 }
 
 void OutputFiles::write_line(std::string_view line) {
-  std::FILE* f = entries_[current_].file;
+  if (unwritten_slots_ > 0 && line.find('\x02') != std::string_view::npos) line = place_slots(line, slot_line_);
+  Entry& e = entries_[current_];
+  e.size += line.size() + (line_end_ == LineEnd::CRLF ? 2 : 1);
+  std::FILE* f = e.file;
   bool ok = fwrite_unlocked(line.data(), 1, line.size(), f) == line.size();
   if (line_end_ == LineEnd::CRLF) ok = ok && fputc_unlocked('\r', f) != EOF;
   ok = ok && fputc_unlocked('\n', f) != EOF;
@@ -139,6 +142,8 @@ void OutputFiles::execute(const Directive& d, const LineCallback& copied_line) {
       if (index == current_) switch_to(0);
       close_handle(entries_[index]);
       entries_[index].deleted = true;
+      entries_[index].size = 0;
+      ++entries_[index].generation;
       {
         std::error_code ignored;
         fs::remove(entries_[index].temp_path, ignored);
@@ -171,69 +176,18 @@ void OutputFiles::copy_into_current(std::string_view name, const LineCallback& c
                                     directory_.string() + "`");
   std::FILE* out = entries_[current_].file;
   std::string partial;  // a line cut by the end of a buffer
+  std::string carry;    // a placeholder cut by the end of a buffer
+  const bool slots = !open_slots_.empty() || !oversize_slots_.empty();
   char buffer[1 << 14];
   while (in) {
     in.read(buffer, sizeof buffer);
     auto n = static_cast<std::size_t>(in.gcount());
     if (n && fwrite_unlocked(buffer, 1, n, out) != n) io_failure("write", entries_[current_].temp_path);
+    if (slots) note_copied_slots(std::string_view(buffer, n), entries_[current_].size, carry, !in);
+    entries_[current_].size += n;
     if (copied_line) split_lines(std::string_view(buffer, n), partial, copied_line);
   }
   if (copied_line && !partial.empty()) copied_line(partial);
-}
-
-namespace {
-
-constexpr std::string_view kFileSize = "$$file_size$$";
-
-std::size_t decimal_digits(std::uintmax_t n) {
-  std::size_t d = 1;
-  while (n >= 10) n /= 10, ++d;
-  return d;
-}
-
-// The size the file has once each of its `count` placeholders is replaced by that size: the smallest
-// fixed point of size = base - count * placeholder + count * digits(size).
-std::uintmax_t self_consistent_size(std::uintmax_t base, std::uintmax_t count) {
-  std::uintmax_t without = base - count * kFileSize.size();
-  for (std::size_t digits = 1; digits <= 20; ++digits) {
-    std::uintmax_t size = without + count * digits;
-    if (decimal_digits(size) == digits) return size;
-  }
-  return base;  // unreachable for real sizes
-}
-
-}  // namespace
-
-void OutputFiles::replace_file_size_placeholders() {
-  for (auto& e : entries_) {
-    if (e.deleted) continue;
-    close_handle(e);
-    std::uintmax_t count = 0;
-    {
-      std::ifstream in(e.temp_path, std::ios::binary);
-      for (std::string line; std::getline(in, line);)
-        for (auto at = line.find(kFileSize); at != std::string::npos; at = line.find(kFileSize, at + kFileSize.size()))
-          ++count;
-    }
-    if (count == 0) continue;
-    const std::string size = std::to_string(self_consistent_size(fs::file_size(e.temp_path), count));
-    fs::path rewritten = e.temp_path;
-    rewritten += ".size";
-    {
-      std::ifstream in(e.temp_path, std::ios::binary);
-      std::ofstream out(rewritten, std::ios::binary);
-      for (std::string line; std::getline(in, line);) {
-        for (auto at = line.find(kFileSize); at != std::string::npos; at = line.find(kFileSize, at + size.size()))
-          line.replace(at, kFileSize.size(), size);
-        out << line;
-        if (!in.eof()) out << '\n';
-      }
-      if (!out.flush()) io_failure("write", rewritten);
-    }
-    fs::rename(rewritten, e.temp_path);
-  }
-  if (!entries_.front().deleted) open_handle(entries_.front(), "ab");
-  if (!entries_[current_].deleted) open_handle(entries_[current_], "ab");
 }
 
 std::string OutputFiles::display_name(const Entry& e) const {

@@ -4,12 +4,14 @@
 // the previous run untouched.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "postproc/directive.hpp"
@@ -43,10 +45,16 @@ public:
   std::string current_name() const;
   bool current_is_main() const { return current_ == 0; }
 
-  // `print_file_size = 1`: replaces each `$$file_size$$` in every file by that file's final size in
-  // bytes (the size with the numbers written in, line ends included). Streams: one pass to count, one
-  // to rewrite. Call after the last line, before commit.
-  void replace_file_size_placeholders();
+  // Text known only after its line is written (start_line/end_line, docs/engine.md): new_slot()
+  // reserves a placeholder and gives the marker to put in the line; fill_slot() supplies the text,
+  // before or after the line is written, and writes it into the file in place. Memory holds only
+  // the slots not yet filled (and a filled text too long for its slot, until the end).
+  std::uint32_t new_slot(std::string& marker);
+  void fill_slot(std::uint32_t id, std::string_view text);
+  // The final pass, after the last line and before commit: every file with placeholders is
+  // rewritten without their framing; with `file_size` (`print_file_size = 1`), each `$$file_size$$`
+  // becomes that file's final size in bytes (line ends included). Streams, two passes at most.
+  void finish_placeholders(bool file_size);
   // Moves every file onto its final name and removes the files the run deleted. Returns the paths written.
   std::vector<std::filesystem::path> commit();
   // Writes every file, in the order they were created, to `out`; when there are several, each starts
@@ -60,6 +68,14 @@ private:
     std::filesystem::path temp_path;
     std::FILE* file = nullptr;  // open while it is the current file (the main file stays open)
     bool deleted = false;
+    std::uint64_t size = 0;       // bytes written so far (placeholders are found by offset)
+    std::uint32_t generation = 0; // counts deletions: a placeholder in a deleted file is dropped
+    bool has_slots = false;       // placeholders were written: the final pass rewrites the file
+  };
+  struct SlotLocation {
+    std::size_t entry = 0;
+    std::uint32_t generation = 0;
+    std::uint64_t offset = 0;
   };
 
   std::size_t find(std::string_view name) const;  // npos when the run has no such file
@@ -70,6 +86,10 @@ private:
   void switch_to(std::size_t index);
   void copy_into_current(std::string_view name, const LineCallback& copied_line);
   std::string display_name(const Entry& e) const;
+  // output_slots.cpp
+  std::string_view place_slots(std::string_view line, std::string& scratch);
+  void note_copied_slots(std::string_view chunk, std::uint64_t offset, std::string& carry, bool last);
+  void compact(std::string& line) const;
 
   std::filesystem::path directory_;
   std::filesystem::path temp_dir_;
@@ -77,6 +97,12 @@ private:
   std::vector<Entry> entries_;
   std::size_t current_ = 0;
   bool committed_ = false;
+  std::uint32_t next_slot_ = 0;
+  std::size_t unwritten_slots_ = 0;  // markers handed out and not yet seen in a written line
+  std::unordered_map<std::uint32_t, std::vector<SlotLocation>> open_slots_;  // written, not filled
+  std::unordered_map<std::uint32_t, std::string> early_slots_;     // filled before written
+  std::unordered_map<std::uint32_t, std::string> oversize_slots_;  // filled, too long to write in place
+  std::string slot_line_;
 };
 
 }  // namespace postproc

@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "postproc/slot_marker.hpp"
+
 namespace postproc {
 namespace {
 
@@ -78,8 +80,30 @@ std::string RegressionComparer::describe(const LineOrigin& o) const {
   return s;
 }
 
-void RegressionComparer::record(Difference d) {
-  if (differences_++ == 0) first_ = std::move(d);
+void RegressionComparer::record(Difference d, std::uint64_t order) {
+  if (differences_++ == 0 || order < first_order_) {
+    first_ = std::move(d);
+    first_order_ = order;
+  }
+}
+
+void RegressionComparer::compare(Deferred& deferred) {
+  Difference& d = deferred.d;
+  if (!lines_match(d.expected->text, *d.actual, options_)) record(std::move(d), deferred.order);
+}
+
+void RegressionComparer::filled(std::uint32_t id, std::string_view text) {
+  for (std::size_t i = 0; i < deferred_.size();) {
+    std::string& actual = *deferred_[i].d.actual;
+    for (auto m = slot::find_marker(actual); m; m = slot::find_marker(actual, m->position + 1))
+      if (m->id == id) actual.replace(m->position, slot::kWidth, text);
+    if (slot::find_marker(actual)) {
+      ++i;
+      continue;
+    }
+    compare(deferred_[i]);
+    deferred_.erase(deferred_.begin() + std::ptrdiff_t(i));
+  }
 }
 
 void RegressionComparer::produced(const std::string& stream, std::string_view text, const LineOrigin& origin) {
@@ -91,13 +115,17 @@ void RegressionComparer::produced(const std::string& stream, std::string_view te
   }
   Stream& s = it->second;
   ++s.line;
+  const std::uint64_t order = produced_++;
   if (!s.expected) return;
   ++compared_;
   if (!s.expected_done && s.expected->next(scratch_)) {
-    if (!lines_match(scratch_.text, text, options_)) record({stream, s.line, scratch_, std::string(text), describe(origin)});
+    if (slot::find_marker(text))
+      deferred_.push_back({{stream, s.line, scratch_, std::string(text), describe(origin)}, order});
+    else if (!lines_match(scratch_.text, text, options_))
+      record({stream, s.line, scratch_, std::string(text), describe(origin)}, order);
   } else {
     s.expected_done = true;
-    record({stream, s.line, std::nullopt, std::string(text), describe(origin)});
+    record({stream, s.line, std::nullopt, std::string(text), describe(origin)}, order);
   }
 }
 
@@ -109,9 +137,14 @@ void RegressionComparer::discarded(const std::string& stream) {
 }
 
 void RegressionComparer::finish() {
+  for (auto& d : deferred_) {  // placeholders never filled (the run failed): shown as `{?N}`
+    *d.d.actual = slot::readable(*d.d.actual);
+    compare(d);
+  }
+  deferred_.clear();
   for (auto& [name, s] : streams_) {
     if (!s.expected || s.expected_done) continue;
-    while (s.expected->next(scratch_)) record({name, ++s.line, scratch_, std::nullopt, ""});
+    while (s.expected->next(scratch_)) record({name, ++s.line, scratch_, std::nullopt, ""}, produced_++);
     s.expected_done = true;
   }
 }

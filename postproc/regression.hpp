@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <cstdint>
 #include <vector>
 
 #include "postproc/line_compare.hpp"
@@ -61,8 +62,11 @@ public:
 
   RegressionComparer(Opener opener, CompareOptions options, std::string post_name);
 
-  // One produced line of `stream`.
+  // One produced line of `stream`. A line with placeholders (start_line/end_line not known yet) is
+  // compared once filled() has supplied all of them; memory holds only such lines.
   void produced(const std::string& stream, std::string_view text, const LineOrigin& origin);
+  // A placeholder's final text (LineObserver::on_slot_filled).
+  void filled(std::uint32_t slot, std::string_view text);
   // A stream the run deleted (`!! delete file = X !!`): no longer reported as not compared.
   void discarded(const std::string& stream);
   // Ends the comparison: lines still expected are differences.
@@ -84,7 +88,12 @@ private:
     bool expected_done = false;
     std::string last_origin;
   };
-  void record(Difference d);
+  struct Deferred {
+    Difference d;  // expected and actual, not yet compared
+    std::uint64_t order = 0;
+  };
+  void record(Difference d, std::uint64_t order);
+  void compare(Deferred& deferred);
   std::string describe(const LineOrigin& o) const;
 
   Opener opener_;
@@ -93,6 +102,9 @@ private:
   std::map<std::string, Stream> streams_;
   std::vector<std::string> unmatched_;
   std::optional<Difference> first_;
+  std::uint64_t first_order_ = 0;  // the first difference in production order, deferred lines included
+  std::uint64_t produced_ = 0;
+  std::vector<Deferred> deferred_;
   std::size_t differences_ = 0;
   std::size_t compared_ = 0;
   ExpectedLine scratch_;

@@ -45,7 +45,8 @@ struct RecordingHost : CapturedLines {
   void procedure_boundary(gppl::ProcedureId id, bool entering) override {
     events.push_back((entering ? "enter " : "leave ") + std::to_string(id));
   }
-  void line_function(gppl::LineFunction which, std::string_view format, std::string& out) override {
+  void line_function(gppl::LineFunction which, std::string_view format, const gppl::Position&,
+                     std::string& out) override {
     out += "<" + std::string(gppl::name_of(which)) + "|" + std::string(format) + ">";
   }
 };
@@ -103,6 +104,8 @@ TEST(LineFunctions, PostsWithoutThemCostTheHostNothing) {
   post.run.start();
   post.call("@t");
   EXPECT_TRUE(post.host.events.empty());
+  EXPECT_FALSE(gppl::uses_line_functions(*post.program));
+  EXPECT_TRUE(gppl::uses_line_functions(*Hosted("@t\n  {nl, end_line}\nendp\n").program));
 }
 
 TEST(LineFunctions, HostWithoutThemIsARunTimeErrorAtTheItem) {
@@ -111,7 +114,7 @@ TEST(LineFunctions, HostWithoutThemIsARunTimeErrorAtTheItem) {
 
 TEST(LineFunctions, HostErrorIsReportedAtTheItem) {
   struct Refusing : CapturedLines {
-    void line_function(gppl::LineFunction, std::string_view, std::string&) override {
+    void line_function(gppl::LineFunction, std::string_view, const gppl::Position&, std::string&) override {
       throw std::runtime_error("@line has no body");
     }
   } host;
