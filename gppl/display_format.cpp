@@ -1,398 +1,243 @@
-// Display formats: the parser (once per format string) and the formatter (once per printed value).
+// Display formats: the printer, run once per printed value (the parser is display_format_parse.cpp).
+//
+// The fast path turns the value into one integer, `units` = the value rounded to N decimals times
+// 10^N, and writes its digits straight into the output. Integers need no rounding. For a numeric
+// value the rounding is decided by one multiplication s = |x| * 10^N whenever that is provably the
+// same as the documented rule (15 significant digits first, then half away from zero at N
+// decimals); otherwise, and for N > 15, the exact printer in display_format_exact.cpp decides.
+//
+// Why one multiplication suffices: let D be |x| taken to 15 significant digits. With
+// 10^e <= |x| < 10^(e+1), |x - D| <= 0.5 * 10^(e-14) <= 5e-15 * |x|, so D * 10^N lies within
+// 5e-15 * s of the exact s. The computed s is off by at most 2^-53 * s (10^N is exact up to 1e22,
+// the product is rounded once). Rounding half away from zero only jumps at half-integers, so when
+// the computed s is farther than 6e-15 * s from the nearest half-integer, D * 10^N rounds to the
+// same integer as s does. That condition also excludes every case where D itself has no digit
+// left to round (s >= 1e14 makes the bound at least 0.6, more than any distance to a half), and
+// s < 2^52 keeps the integer part and the fraction of s exact. The tests compare this path with
+// the exact printer on a large table of values for every format shape.
 #include "gppl/display_format.hpp"
 
-#include <algorithm>
-#include <charconv>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <iterator>
 
-#include <fmt/format.h>
+#include "gppl/display_format_internal.hpp"
 
 namespace gppl {
 
 namespace {
 
-// ---------------------------------------------------------------------------------------------
-// Parsing
+constexpr int max_fast_fraction = fast::max_fraction;
+constexpr std::uint64_t powers_of_ten[] = {1,
+                                           10,
+                                           100,
+                                           1'000,
+                                           10'000,
+                                           100'000,
+                                           1'000'000,
+                                           10'000'000,
+                                           100'000'000,
+                                           1'000'000'000,
+                                           10'000'000'000,
+                                           100'000'000'000,
+                                           1'000'000'000'000,
+                                           10'000'000'000'000,
+                                           100'000'000'000'000,
+                                           1'000'000'000'000'000,
+                                           10'000'000'000'000'000,
+                                           100'000'000'000'000'000,
+                                           1'000'000'000'000'000'000,
+                                           10'000'000'000'000'000'000u};
+constexpr double double_powers_of_ten[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                           1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+static_assert(std::size(double_powers_of_ten) == max_fast_fraction + 1);
 
-[[noreturn]] void format_error(int number, std::string_view what, std::string_view spec) {
-  throw Error(number, Position{}, fmt::format("Format: {} in '{}'", what, spec));
-}
+constexpr double exact_fraction_limit = 4503599627370496.0;  // 2^52: below it s - floor(s) is exact
+constexpr double decision_margin = 6e-15;                    // see the proof at the top
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-char lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+}  // namespace
 
-class FormatParser {
-public:
-  explicit FormatParser(std::string_view spec) : s_(spec) {}
-
-  DisplayFormat parse() {
-    // A prefix sits at the very start; blanks before it and right after it only separate.
-    std::size_t first = s_.find_first_not_of(' ');
-    if (first != std::string_view::npos && s_[first] == '<') {
-      pos_ = first;
-      affix(f_.prefix, f_.prefix_length, "prefix");
-      skip_blanks();
-    }
-    sign_and_lead();
-    integer_part();
-    if (!eat('.')) format_error(421, "No decimal point", s_);
-    fraction_part();
-    trailing_control();
-    skip_blanks();
-    if (eat('(')) options();
-    skip_blanks();
-    if (peek() == '<') {
-      affix(f_.postfix, f_.postfix_length, "postfix");
-      skip_blanks();
-    }
-    if (pos_ < s_.size()) format_error(423, fmt::format("Invalid format option, unexpected '{}'", s_[pos_]), s_);
-    return f_;
-  }
-
-private:
-  char peek() const { return pos_ < s_.size() ? s_[pos_] : '\0'; }
-  bool eat(char c) {
-    if (peek() != c) return false;
-    ++pos_;
-    return true;
-  }
-  void skip_blanks() {
-    while (peek() == ' ') ++pos_;
-  }
-
-  void affix(std::array<char, DisplayFormat::max_affix>& text, std::uint8_t& length, std::string_view which) {
-    ++pos_;  // '<'
-    std::size_t close = s_.find('>', pos_);
-    if (close == std::string_view::npos) format_error(423, fmt::format("Invalid format option, '>' missing after the {}", which), s_);
-    std::size_t n = std::min<std::size_t>(close - pos_, DisplayFormat::max_affix);
-    std::memcpy(text.data(), s_.data() + pos_, n);
-    length = static_cast<std::uint8_t>(n);
-    pos_ = close + 1;
-  }
-
-  // Sign control and leading control, at most one of each, in either order. A run of blanks is
-  // one leading-blank control (the manual writes ' 5.3z').
-  void sign_and_lead() {
-    bool have_sign = false, have_lead = false;
-    for (;;) {
-      char c = peek();
-      if ((c == '+' || c == '-') && !have_sign) {
-        f_.sign = c == '+' ? DisplayFormat::Sign::Always : DisplayFormat::Sign::NegativeOnly;
-        have_sign = true;
-        ++pos_;
-      } else if (c == ' ' && !have_lead) {
-        f_.lead = DisplayFormat::Pad::Blank;
-        have_lead = true;
-        skip_blanks();
-      } else if ((c == 'z' || c == 'Z') && !have_lead) {
-        f_.lead = DisplayFormat::Pad::Zero;
-        have_lead = true;
-        ++pos_;
-      } else {
-        return;
-      }
-    }
-  }
-
-  // Reads a digit count; returns false when there are no digits.
-  bool count(std::uint8_t& out) {
-    std::size_t start = pos_;
-    int value = 0;
-    while (is_digit(peek())) {
-      value = std::min(value * 10 + (s_[pos_] - '0'), 1000);
-      ++pos_;
-    }
-    if (pos_ == start) return false;
-    if (value > DisplayFormat::max_digits)
-      format_error(423, fmt::format("Invalid format option, digit count {} is above {}", s_.substr(start, pos_ - start),
-                                    DisplayFormat::max_digits),
-                   s_);
-    out = static_cast<std::uint8_t>(value);
-    return true;
-  }
-
-  void integer_part() {
-    char c = peek();
-    if (!is_digit(c)) {
-      if (c == '.' || c == '\0') format_error(408, "without any digit", s_);
-      format_error(423, fmt::format("Invalid format option, unexpected '{}'", c), s_);
-    }
-    count(f_.int_digits);
-    if (eat('/') && !count(f_.min_int_digits)) format_error(408, "without any digit after '/'", s_);
-  }
-
-  void fraction_part() {
-    if (!count(f_.frac_digits)) format_error(422, "No fraction digits", s_);
-    if (eat('/') && !count(f_.min_frac_digits)) format_error(422, "No fraction digits after '/'", s_);
-  }
-
-  // 'z' keeps the zeros; a blank pads with blanks, but only as the last character of the format
-  // (elsewhere blanks only separate: '<X> 5.2 (p)').
-  void trailing_control() {
-    char c = peek();
-    if (c == 'z' || c == 'Z') {
-      f_.trail = DisplayFormat::Pad::Zero;
-      ++pos_;
-    } else if (c == ' ' && s_.find_first_not_of(' ', pos_) == std::string_view::npos) {
-      f_.trail = DisplayFormat::Pad::Blank;
-      pos_ = s_.size();
-    }
-  }
-
-  void options() {
-    for (;;) {
-      char c = peek();
-      if (c == '\0') format_error(423, "Invalid format option, ')' missing", s_);
-      ++pos_;
-      switch (lower(c)) {
-        case ')': return;
-        case ' ': break;
-        case 'd': f_.delete_if_zero = true; break;
-        case 'n': f_.no_point = true; break;
-        case 'p': f_.conditional_point = true; break;
-        case 'i': f_.invert = true; break;
-        case '*': add_scale(scale_number(), false); break;
-        case '/': add_scale(scale_number(), true); break;
-        default: format_error(423, fmt::format("Invalid format option '{}'", c), s_);
-      }
-    }
-  }
-
-  // [+|-] ( digits [ "." [digits] ] | "." digits )
-  double scale_number() {
-    skip_blanks();
-    std::size_t start = pos_;
-    if (peek() == '+' || peek() == '-') ++pos_;
-    std::size_t digits_start = pos_;
-    std::size_t digits = 0;
-    while (is_digit(peek())) ++pos_, ++digits;
-    if (eat('.'))
-      while (is_digit(peek())) ++pos_, ++digits;
-    if (digits == 0) format_error(409, "scale factor invalid (a number must follow '*' or '/')", s_);
-    double value = 0;
-    std::from_chars(s_.data() + digits_start, s_.data() + pos_, value);
-    if (s_[start] == '-') value = -value;
-    if (!std::isfinite(value)) format_error(409, "scale factor invalid", s_);
-    return value;
-  }
-
-  void add_scale(double factor, bool divide) {
-    if (divide && factor == 0) format_error(409, "scale factor invalid (division by zero)", s_);
-    if (f_.scale_count < DisplayFormat::max_scales) {
-      f_.scales[f_.scale_count++] = {factor, divide};
-      return;
-    }
-    auto& last = f_.scales[DisplayFormat::max_scales - 1];
-    if (last.divide == divide)
-      last.factor *= factor;
-    else
-      last.factor /= factor;
-  }
-
-  std::string_view s_;
-  std::size_t pos_ = 0;
-  DisplayFormat f_;
-};
-
-// ---------------------------------------------------------------------------------------------
-// Decimal rounding
-
-constexpr int significant_digits = 15;
-
-// A non-negative decimal value: digits[0] has the weight 10^exponent, later digits the next lower
-// powers; digits past `count` are zeros. count == 0 is zero.
-struct Decimal {
-  char digits[significant_digits + 1];
-  int count = 0;
-  int exponent = 0;
-};
-
-// The correctly rounded 15 significant digits of `magnitude` (> 0), through the library.
-void fifteen_digits_exact(double magnitude, Decimal& d) {
-  char buf[40];
-  auto res = std::to_chars(buf, buf + sizeof buf, magnitude, std::chars_format::scientific, significant_digits - 1);
-  // "d.dddddddddddddde+XX"
-  char* e = std::find(buf, res.ptr, 'e');
-  std::from_chars(e + (e[1] == '+' ? 2 : 1), res.ptr, d.exponent);
-  d.digits[0] = buf[0];
-  std::memcpy(d.digits + 1, buf + 2, significant_digits - 1);
-}
-
-// The same digits for the common magnitudes (1e-8 to 1e15) in a few multiplications: one exact
-// power of ten, one rounding to an integer. When the product lies so close to a half that the
-// multiplication's rounding could change the result, the exact path decides.
-bool fifteen_digits_fast(double magnitude, Decimal& d) {
-  static constexpr double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-                                      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-  static constexpr double negative_powers[] = {1e0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9};
-  if (!(magnitude >= 1e-8 && magnitude < 1e15)) return false;
-  auto power = [](int e) { return e >= 0 ? powers[e] : negative_powers[-e]; };
-  int binary_exponent = 0;
-  std::frexp(magnitude, &binary_exponent);  // magnitude in [2^(b-1), 2^b)
-  int exponent = static_cast<int>(std::floor((binary_exponent - 1) * 0.30102999566398120));
-  if (exponent < 14 && magnitude >= power(exponent + 1)) ++exponent;  // now 10^exponent <= magnitude
-  if (exponent > -8 && magnitude < power(exponent)) --exponent;
-  double q = magnitude * powers[14 - exponent];  // in [1e14, 1e15) with an error below 0.07
-  double whole = std::floor(q);
-  double fraction = q - whole;
-  if (q < 1e14 || q >= 1e15 || std::fabs(fraction - 0.5) < 0.1) return false;
-  auto digits = static_cast<std::uint64_t>(whole) + (fraction > 0.5 ? 1 : 0);
-  if (digits >= 1'000'000'000'000'000) {  // rounded up to the next power of ten
-    digits /= 10;
-    ++exponent;
-  }
-  std::to_chars(d.digits, d.digits + significant_digits, digits);
-  d.exponent = exponent;
+bool fast::round_to_units(double magnitude, int n, std::uint64_t& units) {
+  const double s = magnitude * double_powers_of_ten[n];
+  if (!(s < exact_fraction_limit)) return false;
+  const auto whole = static_cast<std::uint64_t>(s);
+  const double from_half = (s - static_cast<double>(whole)) - 0.5;
+  if (std::fabs(from_half) <= s * decision_margin) return false;
+  units = whole + (from_half > 0 ? 1 : 0);
   return true;
 }
 
-// |x| to 15 significant digits, then rounded half away from zero at 10^-fraction_digits.
-Decimal round_decimal(double magnitude, int fraction_digits) {
-  Decimal d;
-  if (magnitude == 0) return d;
-  if (!fifteen_digits_fast(magnitude, d)) fifteen_digits_exact(magnitude, d);
-  d.count = significant_digits;
+namespace {
 
-  int keep = d.exponent + fraction_digits + 1;  // digits with a weight of at least 10^-N
-  if (keep >= significant_digits) return d;
-  if (keep < 0) {
-    d.count = 0;
-    return d;
+// "000".."999", four bytes each: three digits, then the count of trailing zeros (bits 0-1, 3 for
+// "000") and of significant digits (bits 2-3, 0 for "000"). Four bytes of slack after the last.
+constexpr auto digit_triples = [] {
+  std::array<char, 4004> t{};
+  for (int i = 0; i < 1000; ++i) {
+    const int digits[3] = {i / 100, i / 10 % 10, i % 10};
+    int trailing = 0;
+    while (trailing < 3 && digits[2 - trailing] == 0) ++trailing;
+    const int significant = i >= 100 ? 3 : i >= 10 ? 2 : i >= 1 ? 1 : 0;
+    for (int d = 0; d < 3; ++d) t[static_cast<std::size_t>(4 * i + d)] = static_cast<char>('0' + digits[d]);
+    t[static_cast<std::size_t>(4 * i + 3)] = static_cast<char>(trailing | significant << 2);
   }
-  bool up = d.digits[keep] >= '5';
-  d.count = keep;
-  if (up) {
-    int i = keep - 1;
-    while (i >= 0 && d.digits[i] == '9') --i;
-    if (i >= 0) {
-      ++d.digits[i];
-      d.count = i + 1;
-    } else {  // 9.99 -> 10, or nothing kept -> one unit in the last place
-      d.digits[0] = '1';
-      d.count = 1;
-      d.exponent = keep == 0 ? -fraction_digits : d.exponent + 1;
+  return t;
+}();
+
+const char* triple(std::uint64_t v) { return digit_triples.data() + 4 * v; }
+
+// Writes the integer digits of v so that they end at `end` (none for 0); returns where they
+// start. Up to two zeros before the start are scratch.
+char* write_integer_digits(char* end, std::uint64_t v) {
+  char* first = end;
+  while (v >= 1000) {
+    const std::uint64_t q = v / 1000;
+    first -= 3;
+    std::memcpy(first, triple(v - q * 1000), 3);
+    v = q;
+  }
+  const char* top = triple(v);
+  std::memcpy(first - 3, top, 3);  // with its leading zeros, which the caller leaves out
+  return first - (top[3] >> 2);
+}
+
+// Writes the n fraction digits of v (< 10^n, leading zeros included) from `start`, plus scratch
+// up to four bytes; returns how many remain once trailing zeros are dropped.
+int write_fraction_digits(char* start, std::uint64_t v, int n) {
+  if (n <= 3) {  // one table entry: v scaled to three digits, whose extra digits are zeros
+    static constexpr std::uint64_t widen[] = {1000, 100, 10, 1};
+    const char* t = triple(v * widen[n]);
+    std::memcpy(start, t, 4);
+    return 3 - (t[3] & 3);
+  }
+  for (char* p = start + n; p != start; v /= 10) *--p = static_cast<char>('0' + v % 10);
+  int kept = n;
+  while (kept > 0 && start[kept - 1] == '0') --kept;
+  return kept;
+}
+
+char* fill(char* p, int count, char c) {
+  if (count > 0) {
+    std::memset(p, c, static_cast<std::size_t>(count));
+    p += count;
+  }
+  return p;
+}
+
+// Lays out the number part for the rounded value units * 10^-N (N <= 15), exactly as the exact
+// printer does. Returns the end, or nullptr when option d suppresses the item.
+char* write_units(char* p, const DisplayFormat& f, std::uint64_t units, bool negative) {
+  if (units == 0 && f.delete_if_zero) return nullptr;
+  const int n = f.frac_digits;
+
+  std::uint64_t whole = units, fraction = 0;
+  if (n > 0) {
+    whole = units / powers_of_ten[n];
+    fraction = units - whole * powers_of_ten[n];
+  }
+  // Digits around a point at digits + 24: up to 20 integer digits before it, up to 15 fraction
+  // digits after it. The copies below move fixed sizes (a few register moves, no library call);
+  // bytes past the digits are scratch that later writes cover or the length leaves out.
+  char digits[48];
+  char* const point_at = digits + 24;
+  const int int_len = static_cast<int>(point_at - write_integer_digits(point_at, whole));
+  const int kept = write_fraction_digits(point_at, fraction, n);
+
+  // Fraction digits kept: trailing zeros go down to n (/n), unless 'z'; blanks replace them
+  // with a trailing blank; option p drops a zero fraction together with the point.
+  int frac_len = n;
+  int frac_blanks = 0;
+  bool point = !f.no_point;
+  if (f.trail != DisplayFormat::Pad::Zero || f.conditional_point) {
+    if (kept == 0 && f.conditional_point) {
+      point = false;
+      frac_len = 0;
+    } else if (f.trail != DisplayFormat::Pad::Zero) {
+      frac_len = kept > f.min_frac_digits ? kept : (f.min_frac_digits < n ? f.min_frac_digits : n);
+      if (f.trail == DisplayFormat::Pad::Blank) frac_blanks = n - frac_len;
     }
   }
-  while (d.count > 0 && d.digits[d.count - 1] == '0') --d.count;
-  return d;
-}
 
-char digit_at(const Decimal& d, int weight) {
-  int index = d.exponent - weight;
-  return (index >= 0 && index < d.count) ? d.digits[index] : '0';
-}
-
-// ---------------------------------------------------------------------------------------------
-// Formatting
-
-// Longest output: affixes, pad up to M, sign, 101 integer digits of 1e100 (or m), point, N digits.
-constexpr std::size_t max_output = 2 * DisplayFormat::max_affix + 2 * DisplayFormat::max_digits + 110;
-
-// Writes the number part (without affixes) into `p`, given its integer and fraction digits.
-// Returns the end.
-char* assemble(char* p, const DisplayFormat& f, bool negative, const char* int_digits, int int_len,
-               char* frac, int frac_len_total) {
-  int zeros = std::max(0, f.min_int_digits - int_len);  // /m: zero-fill
-  int shown_int = int_len + zeros;
-
-  bool frac_zero = true;
-  for (int i = 0; i < frac_len_total; ++i) frac_zero = frac_zero && frac[i] == '0';
-  int frac_len = frac_len_total;
-  while (frac_len > f.min_frac_digits && frac[frac_len - 1] == '0') --frac_len;
-  if (f.trail == DisplayFormat::Pad::Zero) frac_len = frac_len_total;
-  if (f.trail == DisplayFormat::Pad::Blank) {
-    std::fill(frac + frac_len, frac + frac_len_total, ' ');
-    frac_len = frac_len_total;
-  }
-  bool point = !f.no_point && !(f.conditional_point && frac_zero);
-  if (f.conditional_point && frac_zero) frac_len = 0;
-  // Never print a number without any digit (m = 0 and a zero value): write "0".
-  bool any_digit = shown_int > 0 || std::any_of(frac, frac + frac_len, [](char c) { return c != ' '; });
-  if (!any_digit) zeros = shown_int = 1;
-
-  int pad = std::max(0, f.int_digits - shown_int);
-  if (f.lead == DisplayFormat::Pad::Blank) p = std::fill_n(p, pad, ' ');
+  int zeros = f.min_int_digits > int_len ? f.min_int_digits - int_len : 0;
+  if (int_len + zeros == 0 && frac_len == 0) zeros = 1;  // never a number without any digit
+  if (f.lead == DisplayFormat::Pad::Blank) p = fill(p, f.int_digits - (int_len + zeros), ' ');
   if (negative)
     *p++ = '-';
   else if (f.sign == DisplayFormat::Sign::Always)
     *p++ = '+';
-  if (f.lead == DisplayFormat::Pad::Zero) p = std::fill_n(p, pad, '0');
-  p = std::fill_n(p, zeros, '0');
-  p = std::copy_n(int_digits, int_len, p);
+  if (f.lead == DisplayFormat::Pad::Zero) p = fill(p, f.int_digits - (int_len + zeros), '0');
+  p = fill(p, zeros, '0');
+  std::memcpy(p, point_at - int_len, 20);  // at most 20 integer digits (2^64)
+  p += int_len;
   if (point) *p++ = '.';
-  return std::copy_n(frac, frac_len, p);
+  std::memcpy(p, point_at, 16);  // at most 15 fraction digits
+  p += frac_len;
+  return fill(p, frac_blanks, ' ');
 }
 
-// Returns the end of the number part, or nullptr when option d suppresses it.
-char* format_number(char* p, const DisplayFormat& f, const Value& v) {
-  char int_digits[128];
-  char frac[DisplayFormat::max_digits];
-  int int_len = 0;
-  bool negative = false;
-  bool zero = false;
+// The number part through the fast path; `handled` is false when the exact printer must decide.
+char* format_number(char* p, const DisplayFormat& f, const Value& v, bool& handled) {
   const int n = f.frac_digits;
-
-  if (v.type != Type::Numeric && f.scale_count == 0) {  // exact integer path
-    std::int64_t i = v.type == Type::Logical ? (v.logical ? 1 : 0) : v.integer;
-    std::uint64_t magnitude = i < 0 ? 0 - static_cast<std::uint64_t>(i) : static_cast<std::uint64_t>(i);
+  std::uint64_t units = 0;
+  bool negative = false;
+  handled = false;
+  if (v.type != Type::Numeric && f.scale_count == 0) {  // integers and logicals: exact, no rounding
+    const std::int64_t i = v.type == Type::Logical ? (v.logical ? 1 : 0) : v.integer;
+    const std::uint64_t magnitude = i < 0 ? 0 - static_cast<std::uint64_t>(i) : static_cast<std::uint64_t>(i);
+    if (n <= max_fast_fraction && magnitude <= UINT64_MAX / powers_of_ten[n]) {
+      handled = true;
+      units = magnitude * powers_of_ten[n];
+    }
     negative = (i < 0) != f.invert && i != 0;
-    zero = i == 0;
-    if (!zero) int_len = static_cast<int>(std::to_chars(int_digits, int_digits + sizeof int_digits, magnitude).ptr - int_digits);
-    std::fill_n(frac, n, '0');
   } else {
     double x = v.type == Type::Numeric ? v.numeric
                : v.type == Type::Logical ? (v.logical ? 1.0 : 0.0)
                                          : static_cast<double>(v.integer);
     for (int s = 0; s < f.scale_count; ++s) x = f.scales[s].divide ? x / f.scales[s].factor : x * f.scales[s].factor;
     if (f.invert) x = -x;
-    if (!(std::fabs(x) <= 1e100))
-      throw Error(410, Position{}, fmt::format("Val: number out of range ({} is beyond 1.E100)", x));
-    Decimal d = round_decimal(std::fabs(x), n);
-    zero = d.count == 0;
-    negative = x < 0 && !zero;  // a value that rounds to zero is never negative
-    for (int w = d.exponent; w >= 0 && !zero; --w) int_digits[int_len++] = digit_at(d, w);
-    for (int i = 0; i < n; ++i) frac[i] = digit_at(d, -1 - i);
+    handled = n <= max_fast_fraction && fast::round_to_units(std::fabs(x), n, units);
+    negative = x < 0 && units != 0;  // a value that rounds to zero has no sign
   }
-  if (zero && f.delete_if_zero) return nullptr;
-  return assemble(p, f, negative, int_digits, int_len, frac, n);
+  return handled ? write_units(p, f, units, negative) : p;
 }
 
 }  // namespace
 
-DisplayFormat parse_display_format(std::string_view spec) { return FormatParser(spec).parse(); }
+constexpr std::size_t short_item = 32;
 
 void append_formatted(std::string& out, const DisplayFormat& f, const Value& v) {
   if (v.type == Type::String) {
     out += v.text;
     return;
   }
-  char buf[max_output];
-  char* p = std::copy_n(f.prefix.data(), f.prefix_length, buf);
-  p = format_number(p, f, v);
+  // Affixes are copied whole (a fixed-size copy is a few moves; the length decides what counts).
+  char buf[DisplayFormat::max_affix + exact::max_number + DisplayFormat::max_affix];
+  std::memcpy(buf, f.prefix.data(), DisplayFormat::max_affix);
+  char* p = buf + f.prefix_length;
+  bool handled = false;
+  p = format_number(p, f, v, handled);
+  if (!handled) p = exact::format_number(p, f, v, exact::Digits::Quick);
   if (p == nullptr) return;  // option d: not even the affixes
-  p = std::copy_n(f.postfix.data(), f.postfix_length, p);
-  out.append(buf, static_cast<std::size_t>(p - buf));
+  std::memcpy(p, f.postfix.data(), DisplayFormat::max_affix);
+  p += f.postfix_length;
+  const auto length = static_cast<std::size_t>(p - buf);
+  if (length <= short_item) {
+    // A constant-size append compiles to a few moves instead of a memcpy call; the extra bytes
+    // are cut off again at once.
+    const std::size_t before = out.size();
+    out.append(buf, short_item);
+    out.resize(before + length);
+  } else {
+    out.append(buf, length);
+  }
 }
 
 std::string format_value(const DisplayFormat& f, const Value& v) {
   std::string s;
   append_formatted(s, f, v);
   return s;
-}
-
-double round_half_away(double x, int fraction_digits) {
-  if (!std::isfinite(x)) return x;
-  fraction_digits = std::clamp(fraction_digits, -400, 400);
-  Decimal d = round_decimal(std::fabs(x), fraction_digits);
-  if (d.count == 0) return 0.0;
-  char buf[48];
-  char* p = std::copy_n(d.digits, d.count, buf);
-  *p++ = 'e';
-  p = std::to_chars(p, buf + sizeof buf, d.exponent - d.count + 1).ptr;
-  double r = 0;
-  std::from_chars(buf, p, r);
-  return x < 0 ? -r : r;
 }
 
 }  // namespace gppl
