@@ -48,33 +48,45 @@ bool ArcFilter::next(toolpath::Command& out) {
     return true;
   }
   if (!input_.next(out)) return false;
-  if (out.is_stream_command() && (is(out, "@arc") || is(out, "@arc_5x"))) {
-    plan(out);
+  const CommandKind kind = command_kind(out);
+  if (out.is_stream_command() && (kind == CommandKind::arc || kind == CommandKind::arc_5x)) {
+    plan(out, kind);
     if (pieces_ > 0) {
       sets_.prepare(out, arc_, history_);
-      history_.observe(out);
+      history_.observe(out, kind);
       std::swap(original_, out);
       emit(out);
       return true;
     }
   }
-  track(out);
+  track(out, kind);
   return true;
 }
 
-void ArcFilter::track(const toolpath::Command& out) {
-  position_.update(out);
-  history_.observe(out);
+void ArcFilter::track(const toolpath::Command& out, CommandKind kind) {
+  position_.update(out, kind);
+  history_.observe(out, kind);
   if (!out.is_stream_command()) return;
-  if (auto a = number(out, "apos")) apos_ = a;
-  if (auto b = number(out, "bpos")) bpos_ = b;
+  // apos and bpos: the first of each name counts, as with number(); one pass for both.
+  bool seen[2] = {false, false};
+  for (const toolpath::Parameter& p : out.parameters) {
+    if (p.name.size() != 4 || !toolpath::iequals(std::string_view(p.name).substr(1), "pos")) continue;
+    const char axis = toolpath::ascii_lower(p.name[0]);
+    if (axis != 'a' && axis != 'b') continue;
+    const int i = axis - 'a';
+    if (seen[i]) continue;
+    seen[i] = true;
+    const toolpath::Value& v = p.value;
+    if (v.kind == toolpath::ValueKind::Integer || v.kind == toolpath::ValueKind::Numeric)
+      (i == 0 ? apos_ : bpos_) = v.as_number();
+  }
 }
 
 // Decides what replaces the arc (spec 3.2 process_arc); pieces_ stays 0 when it passes unchanged.
-void ArcFilter::plan(const toolpath::Command& c) {
+void ArcFilter::plan(const toolpath::Command& c, CommandKind kind) {
   piece_ = pieces_ = chords_ = 0;
   cuts_.clear();
-  five_axis_ = is(c, "@arc_5x");
+  five_axis_ = kind == CommandKind::arc_5x;
   rotary_from_[0] = apos_;
   rotary_from_[1] = bpos_;
   rotary_to_[0] = number(c, "apos");
@@ -189,7 +201,7 @@ void ArcFilter::emit(toolpath::Command& out) {
     }
   }
   if (last) out.trace = original_.trace;  // the original post's output belongs to the whole arc
-  track(out);
+  track(out, command_kind(out));
 }
 
 }  // namespace prp

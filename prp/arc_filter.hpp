@@ -41,9 +41,9 @@ public:
   bool next(toolpath::Command& out) override;
 
 private:
-  void plan(const toolpath::Command& arc);
+  void plan(const toolpath::Command& arc, CommandKind kind);
   void emit(toolpath::Command& out);
-  void track(const toolpath::Command& out);
+  void track(const toolpath::Command& out, CommandKind kind);
 
   toolpath::CommandSource& input_;
   ArcSettings settings_;

@@ -13,13 +13,14 @@ bool CompensationCheck::needed(const MachineParameters& params) {
 bool CompensationCheck::next(toolpath::Command& out) {
   if (!input_.next(out)) return false;
   if (!out.is_stream_command()) return true;
-  if (is(out, "@change_tool") || is(out, "@turn_change_tool")) {
+  const CommandKind kind = command_kind(out);
+  if (kind == CommandKind::change_tool || kind == CommandKind::turn_change_tool) {
     if (auto d = number(out, "tool_diameter")) tool_radius_ = *d / 2;
     else if (auto r = number(out, "tool_radius")) tool_radius_ = *r;
-  } else if (is(out, "@compensation")) {
+  } else if (kind == CommandKind::compensation) {
     const toolpath::Value* side = out.find("side");
     side_ = side && !toolpath::iequals(side->text, "COMP_OFF") ? side->text : std::string();
-  } else if (is(out, "@arc") && !side_.empty() && tool_radius_) {
+  } else if (kind == CommandKind::arc && !side_.empty() && tool_radius_) {
     const toolpath::Value* dir = out.find("arc_direction");
     auto radius = number(out, "radius");
     // The tool runs inside the arc when it is on the side of the centre: left of a CCW arc,

@@ -83,18 +83,31 @@ double angle_in(const Vector3d& offset, PlaneAxes a) {
 
 }  // namespace
 
+// Runs on every parameter of every motion: the set prefixes are one or two letters, so most names
+// are rejected by their length or first letter before any suffix is compared.
 std::optional<SetCoordinate> classify_set_coordinate(std::string_view name) {
-  if (name.size() < 5) return std::nullopt;
+  if (name.size() < 5 || name.size() > 9) return std::nullopt;  // xhpos .. ztocenter
   const char first = toolpath::ascii_lower(name[0]);
-  const auto axis = kAxes.find(first);
-  if (axis == std::string_view::npos) return std::nullopt;
+  if (first < 'x' || first > 'z') return std::nullopt;
   for (int r = 0; r < 3; ++r) {
-    if (!ends_with_ci(name, kRoles[r])) continue;
-    const std::string_view middle = name.substr(1, name.size() - 1 - kRoles[r].size());
-    for (int s = 0; s < kSetCount; ++s)
-      if (toolpath::iequals(middle, kSetPrefixes[static_cast<std::size_t>(s)]))
-        return SetCoordinate{s, static_cast<SetRole>(r), static_cast<int>(axis)};
-    return std::nullopt;
+    const std::string_view role = kRoles[r];
+    if (!ends_with_ci(name, role)) continue;
+    const std::string_view middle = name.substr(1, name.size() - 1 - role.size());
+    int set = -1;
+    if (middle.size() == 1) {
+      switch (toolpath::ascii_lower(middle[0])) {
+        case 'h': set = 0; break;
+        case 'm': set = 1; break;
+        case 'o': set = 2; break;
+        case 'l': set = 3; break;
+        case 't': set = 4; break;
+        default: break;
+      }
+    } else if (middle.size() == 2 && toolpath::iequals(middle, "to")) {
+      set = 5;
+    }
+    if (set < 0) return std::nullopt;
+    return SetCoordinate{set, static_cast<SetRole>(r), first - 'x'};
   }
   return std::nullopt;
 }
@@ -109,13 +122,15 @@ void SetHistory::add(int set, const Vector3d& pos, const Vector3d& in_set) {
   list.push_back({pos, in_set});
 }
 
-void SetHistory::observe(const toolpath::Command& c) {
+void SetHistory::observe(const toolpath::Command& c) { observe(c, command_kind(c)); }
+
+void SetHistory::observe(const toolpath::Command& c, CommandKind kind) {
+  using K = CommandKind;
   if (!c.is_stream_command()) return;
-  if (!moves_tool(c)) {
-    for (std::string_view keeps : {"@compensation", "@message", "@feed_spin", "@delay", "@tool_path_info",
-                                   "@absolute_mode", "@line_on"})
-      if (is(c, keeps)) return;
-    clear();
+  if (!has(kMovesTool, kind)) {
+    constexpr KindSet keeps = bit(K::compensation) | bit(K::message) | bit(K::feed_spin) | bit(K::delay) |
+                              bit(K::tool_path_info) | bit(K::absolute_mode) | bit(K::line_on);
+    if (!has(keeps, kind)) clear();
     return;
   }
   std::array<std::array<double, 3>, kSetCount> end{};

@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include "prp/command_kind.hpp"
 #include "toolpath/command.hpp"
 #include "toolpath/geometry.hpp"
 
@@ -45,6 +46,7 @@ public:
   // Motion commands add their end points; commands that may move the frame (a tool change, a new
   // job, a plane rotation, a home) forget everything.
   void observe(const toolpath::Command& c);
+  void observe(const toolpath::Command& c, CommandKind kind);  // kind: command_kind(c), already known
   void add(int set, const Eigen::Vector3d& pos, const Eigen::Vector3d& in_set);
   void clear();
   const std::vector<Pair>& pairs(int set) const { return pairs_[static_cast<std::size_t>(set)]; }

@@ -25,12 +25,14 @@ bool ModeCommands::next(toolpath::Command& out) {
   }
   if (!input_.next(out)) return false;
   if (done_ || !out.is_stream_command()) return true;
-  if (is(out, "@absolute_mode") || is(out, "@relative_mode")) {
+  using K = CommandKind;
+  const K kind = command_kind(out);
+  if (kind == K::absolute_mode || kind == K::relative_mode) {
     done_ = true;  // the toolpath sets the mode itself
     return true;
   }
-  if (is(out, "@proc") || is(out, "@call_proc") || is(out, "@call_prms") || is(out, "@loop")) structured_ = true;
-  if (!is_motion_block(out)) return true;
+  if (kind == K::proc || kind == K::call_proc || kind == K::call_prms || kind == K::loop) structured_ = true;
+  if (!has(kMotionBlock, kind)) return true;
   done_ = true;
   if (structured_) {
     if (warn_) warn_(out, fmt::format("the PRP says {} but the toolpath sends no {} before its first motion", why_, mode_));

@@ -14,26 +14,12 @@ StreamError::StreamError(const toolpath::Command& command, const std::string& me
 
 bool is(const toolpath::Command& c, std::string_view name) { return toolpath::iequals(c.name, name); }
 
-bool moves_tool(const toolpath::Command& c) {
-  if (!c.is_stream_command()) return false;
-  for (std::string_view n : {"@rapid_move", "@line", "@arc", "@line_on", "@move_5x", "@line_5x", "@arc_5x",
-                             "@start_program", "@end_program"})
-    if (is(c, n)) return true;
-  return false;
-}
+bool moves_tool(const toolpath::Command& c) { return c.is_stream_command() && has(kMovesTool, command_kind(c)); }
 
-bool is_feed_motion(const toolpath::Command& c) {
-  return c.is_stream_command() && (is(c, "@line") || is(c, "@arc") || is(c, "@line_on") || is(c, "@line_5x") ||
-                                   is(c, "@arc_5x"));
-}
+bool is_feed_motion(const toolpath::Command& c) { return c.is_stream_command() && has(kFeedMotion, command_kind(c)); }
 
 bool is_motion_block(const toolpath::Command& c) {
-  if (!c.is_stream_command()) return false;
-  for (std::string_view n : {"@rapid_move", "@line", "@arc", "@line_on", "@move_5x", "@line_5x", "@arc_5x", "@move_4x",
-                             "@line_4x", "@move4x_cartesian", "@move4x_polar", "@move4x_dir", "@line4x_cartesian",
-                             "@line4x_polar", "@line4x_dir", "@arc4x_cartesian", "@arc4x_polar", "@drill"})
-    if (is(c, n)) return true;
-  return false;
+  return c.is_stream_command() && has(kMotionBlock, command_kind(c));
 }
 
 std::optional<double> number(const toolpath::Command& c, std::string_view name) {
@@ -67,8 +53,10 @@ int axis_of(std::string_view name) {
 
 // One pass over the parameters (it runs for every command, in several filters); the first xpos,
 // ypos, zpos count, as with number().
-void ToolPosition::update(const toolpath::Command& c) {
-  if (!moves_tool(c)) return;
+void ToolPosition::update(const toolpath::Command& c) { update(c, command_kind(c)); }
+
+void ToolPosition::update(const toolpath::Command& c, CommandKind kind) {
+  if (!c.is_stream_command() || !has(kMovesTool, kind)) return;
   bool seen[3] = {false, false, false};
   for (const toolpath::Parameter& p : c.parameters) {
     const int i = axis_of(p.name);

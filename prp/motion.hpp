@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "prp/command_kind.hpp"
 #include "toolpath/command.hpp"
 
 namespace prp {
@@ -27,6 +28,7 @@ void set_point(toolpath::Command& c, const Eigen::Vector3d& p);
 class ToolPosition {
 public:
   void update(const toolpath::Command& c);
+  void update(const toolpath::Command& c, CommandKind kind);  // kind: command_kind(c), already known
   std::optional<double> axis(int i) const { return axes_[static_cast<std::size_t>(i)]; }
   void set_axis(int i, double v) { axes_[static_cast<std::size_t>(i)] = v; }
   // All three axes, when known.

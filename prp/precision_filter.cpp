@@ -1,6 +1,7 @@
 #include "prp/precision_filter.hpp"
 
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <vector>
 
@@ -16,21 +17,29 @@ constexpr std::string_view kNames[] = {"xpos",          "ypos",          "zpos",
 constexpr int kFeed = 14, kSpin = 15;
 
 // Which of kNames a parameter name is, or -1. Every parameter of every command is looked up, so a
-// name is compared only with the candidates of its own length.
+// name is compared only with the (at most two) candidates of its length and first letter.
 class NameIndex {
 public:
   NameIndex() {
-    for (int k = 0; k < static_cast<int>(std::size(kNames)); ++k) by_length_[kNames[k].size()].push_back(k);
+    for (auto& slot : slots_) slot = {-1, -1};
+    for (int k = 0; k < static_cast<int>(std::size(kNames)); ++k) {
+      auto& slot = slots_[slot_of(kNames[k])];
+      (slot[0] < 0 ? slot[0] : slot[1]) = static_cast<std::int8_t>(k);
+    }
   }
   int find(std::string_view name) const {
-    if (name.size() >= by_length_.size()) return -1;
-    for (int k : by_length_[name.size()])
-      if (toolpath::iequals(kNames[k], name)) return k;
+    if (name.empty() || name.size() > kLongest) return -1;
+    for (int k : slots_[slot_of(name)])
+      if (k >= 0 && toolpath::iequals(kNames[k], name)) return k;
     return -1;
   }
 
 private:
-  std::array<std::vector<int>, 18> by_length_;  // longest name: drill_clearance_z, 17
+  static constexpr std::size_t kLongest = 17;  // drill_clearance_z
+  static std::size_t slot_of(std::string_view name) {
+    return name.size() * 32 + (static_cast<unsigned char>(toolpath::ascii_lower(name[0])) & 31u);
+  }
+  std::array<std::array<std::int8_t, 2>, (kLongest + 1) * 32> slots_;  // drill_upper_z, drill_lower_z share one
 };
 
 const NameIndex kIndex;
@@ -38,11 +47,20 @@ const NameIndex kIndex;
 double scale_of(const std::optional<int>& digits) { return digits ? std::pow(10.0, *digits) : 0.0; }
 
 double round_to(double v, double scale) {
-  double r = std::round(v * scale) / scale;
+  double r = round_half_away(v * scale) / scale;
   return r == 0.0 ? 0.0 : r;  // never -0
 }
 
 }  // namespace
+
+double round_half_away(double y) {
+  if (!(std::abs(y) < 4503599627370496.0)) return y;  // 2^52: already whole (or inf, NaN)
+  double t = static_cast<double>(static_cast<std::int64_t>(y));  // towards zero
+  const double fraction = y - t;                                   // exact
+  if (fraction >= 0.5) t += 1.0;
+  else if (fraction <= -0.5) t -= 1.0;
+  return t;
+}
 
 std::optional<int> digits_of(double v) {
   if (v >= 1.0) return static_cast<int>(std::lround(v));
@@ -73,7 +91,8 @@ bool PrecisionFilter::next(toolpath::Command& out) {
   if (!input_.next(out)) return false;
   if (!out.is_stream_command()) return true;
   const double zero = s_.zero_value;
-  const bool snap_axes = zero > 0 && moves_tool(out);
+  const bool moves = has(kMovesTool, command_kind(out));
+  const bool snap_axes = zero > 0 && moves;
   unsigned seen = 0;  // a name given twice: only its first occurrence counts, as with Command::find
   for (toolpath::Parameter& p : out.parameters) {
     const int k = kIndex.find(p.name);
@@ -99,8 +118,8 @@ bool PrecisionFilter::next(toolpath::Command& out) {
       set(round_to(x, spin_scale_));
     }
     if (changed) v = toolpath::Value::make_numeric(x, v.flag);
+    if (moves && k < 3) sent_.set_axis(k, x);  // where the tool is sent (ToolPosition::update, in this pass)
   }
-  sent_.update(out);
   return true;
 }
 

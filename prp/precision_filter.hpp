@@ -22,6 +22,10 @@ struct PrecisionSettings {
 // (0.001: 3 digits), 0 no rounding.
 std::optional<int> digits_of(double movement_precision);
 
+// std::round (halves away from zero) without the library call, for every double (inf and NaN too);
+// the zero it gives for -0.4 may be +0 where std::round gives -0 (rounding writes no -0 anyway).
+double round_half_away(double y);
+
 class PrecisionFilter final : public toolpath::CommandSource {
 public:
   PrecisionFilter(toolpath::CommandSource& input, PrecisionSettings settings);

@@ -15,15 +15,10 @@ namespace {
 // A stand-in for a job in the main-program spool; its index is the job's number.
 constexpr const char* kJobMarker = "\x01job";
 
-bool is_structure(const toolpath::Command& c) {
-  for (std::string_view n : {"@proc", "@end_proc", "@call_proc", "@call_prms", "@loop", "@end_loop"})
-    if (is(c, n)) return true;
-  return false;
-}
-
-bool is_tool_change(const toolpath::Command& c) {
-  return is(c, "@change_tool") || is(c, "@turn_change_tool") || is(c, "@chng_tool_cnext");
-}
+using K = CommandKind;
+constexpr KindSet kStructure =
+    bit(K::proc) | bit(K::end_proc) | bit(K::call_proc) | bit(K::call_prms) | bit(K::loop) | bit(K::end_loop);
+constexpr KindSet kToolChange = bit(K::change_tool) | bit(K::turn_change_tool) | bit(K::chng_tool_cnext);
 
 void mix(std::uint64_t& hash, double v) {
   std::uint64_t bits;
@@ -81,7 +76,8 @@ bool ProcedureGeneration::collect() {
   Job job;
   Cycle cycle;
   while (input_.next(c)) {
-    if (c.is_stream_command() && is_structure(c)) {
+    const K kind = command_kind(c);
+    if (c.is_stream_command() && has(kStructure, kind)) {
       if (jobs_.empty() && !in_job) {  // a structured toolpath: hand it on as it is
         std::swap(held_, c);
         has_held_ = true;
@@ -93,7 +89,7 @@ bool ProcedureGeneration::collect() {
                            "restructure it");
     }
     if (!in_job) {
-      if (c.is_stream_command() && is(c, "@start_of_job")) {
+      if (c.is_stream_command() && kind == K::start_of_job) {
         job = Job{};
         job.index = c.index;
         job.offset = bodies_->write(c);
@@ -110,26 +106,26 @@ bool ProcedureGeneration::collect() {
     }
     const std::int64_t at = bodies_->write(c);
     if (!c.is_stream_command()) continue;
-    if (leading && is_tool_change(c)) {
+    if (leading && has(kToolChange, kind)) {
       ++job.tools;
       if (const toolpath::Value* t = c.find("tool_number"); t && !job.tool_number) job.tool_number = *t;
       continue;
     }
     leading = false;
-    if (is(c, "@drill")) {
+    if (kind == K::drill) {
       cycle = Cycle{};
       cycle.index = c.index;
       cycle.hash = 14695981039346656037u;
       in_cycle = true;
-    } else if (in_cycle && is(c, "@drill_point")) {
+    } else if (in_cycle && kind == K::drill_point) {
       if (cycle.points++ == 0) cycle.points_offset = at;
       for (const char* axis : {"xpos", "ypos", "zpos"}) mix(cycle.hash, number(c, axis).value_or(0.0));
-    } else if (in_cycle && is(c, "@end_drill")) {
+    } else if (in_cycle && kind == K::end_drill) {
       in_cycle = false;
       mix(cycle.hash, static_cast<double>(cycle.points));
       cycles_.push_back(cycle);
       ++job.cycles;
-    } else if (is(c, "@end_of_job")) {
+    } else if (kind == K::end_of_job) {
       in_cycle = false;  // a cycle without @end_drill is never shared
       job.end = bodies_->end();
       jobs_.push_back(job);
@@ -239,12 +235,13 @@ bool ProcedureGeneration::next_main(toolpath::Command& out) {
     call(queue_.back(), *job.label, &start);
     return next_main(out);
   }
-  if (out.is_stream_command() && is(out, "@start_of_file") && last_label_ >= first_label_) {
+  const K kind = out.is_stream_command() ? command_kind(out) : K::other;
+  if (kind == K::start_of_file && last_label_ >= first_label_) {
     out.set("first_proc_number", toolpath::Value::make_integer(first_label_));
     out.set("last_proc_number", toolpath::Value::make_integer(last_label_));
     out.set("first_user_proc", toolpath::Value::make_integer(last_label_ + 1));
   }
-  if (out.is_stream_command() && is(out, "@end_of_file") && !bodies_sent_) {
+  if (kind == K::end_of_file && !bodies_sent_) {
     std::swap(end_of_file_, out);
     has_end_of_file_ = true;
     if (start_next_procedure()) return next(out);
@@ -318,11 +315,12 @@ bool ProcedureGeneration::next_body(toolpath::Command& out) {
       --skip_tools_;
       continue;
     }
+    const K kind = command_kind(out);
     if (skipping_points_) {
-      if (is(out, "@end_drill")) skipping_points_ = false;
-      if (is(out, "@drill_point") || is(out, "@end_drill")) continue;
+      if (kind == K::end_drill) skipping_points_ = false;
+      if (kind == K::drill_point || kind == K::end_drill) continue;
     }
-    if (is(out, "@drill") && cycle_ < job.first_cycle + job.cycles) {
+    if (kind == K::drill && cycle_ < job.first_cycle + job.cycles) {
       const Cycle& cycle = cycles_[cycle_++];
       if (cycle.label) {
         queue_.emplace_back();
@@ -344,7 +342,7 @@ bool ProcedureGeneration::next_points(toolpath::Command& out) {
     }
     if (!bodies_->read(out)) return false;
     last_index_ = out.index;
-    if (out.is_stream_command() && is(out, "@end_drill")) {
+    if (out.is_stream_command() && command_kind(out) == K::end_drill) {
       const std::int64_t label = *cycles_[shared_[next_proc_ - jobs_.size() - 1]].label;
       queue_.emplace_back();
       bracket(queue_.back(), "@end_proc", label, false, last_index_);

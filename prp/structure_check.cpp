@@ -10,6 +10,8 @@ StructureCheck::StructureCheck(toolpath::CommandSource& input, const MachinePara
     : input_(input),
       warn_(std::move(warn)),
       gen_procs_(p.text("gen_procs")),
+      procs_off_(toolpath::iequals(gen_procs_, "N")),
+      calls_with_parameters_(toolpath::iequals(gen_procs_, "D")),
       loop_exist_(p.logical("loop_exist")),
       rotate_(p.logical("rotate")),
       mirror_(p.logical("mirror")),
@@ -31,31 +33,46 @@ void StructureCheck::check(const toolpath::Command& c) {
   auto warn = [&](const std::string& message) {
     if (warn_ && warned_.insert(c.name).second) warn_(c, message);
   };
-  const bool procs_off = toolpath::iequals(gen_procs_, "N");
-  if (is(c, "@call_proc") && procs_off) warn("@call_proc although the PRP says gen_procs = N");
-  if (is(c, "@call_prms") && !toolpath::iequals(gen_procs_, "D"))
-    warn(fmt::format("@call_prms although the PRP says gen_procs = {} (only D calls with parameters)", gen_procs_));
-  if (is(c, "@loop") && !loop_exist_) warn("@loop although the PRP says loop_exist = N");
-  if (is(c, "@rotate") && !rotate_) warn("@rotate although the PRP says rotate = N");
-  if (is(c, "@mirror") && !mirror_) warn("@mirror although the PRP says mirror = N");
-  if (software_transform_ && (is(c, "@loop") || is(c, "@rotate") || is(c, "@mirror") || is(c, "@change_ref_point")))
+  using K = CommandKind;
+  const K kind = command_kind(c);
+  switch (kind) {
+    case K::other: return;  // the commands below are the only ones checked
+    case K::call_proc:
+      if (procs_off_) warn("@call_proc although the PRP says gen_procs = N");
+      break;
+    case K::call_prms:
+      if (!calls_with_parameters_)
+        warn(fmt::format("@call_prms although the PRP says gen_procs = {} (only D calls with parameters)", gen_procs_));
+      break;
+    case K::loop:
+      if (!loop_exist_) warn("@loop although the PRP says loop_exist = N");
+      break;
+    case K::rotate:
+      if (!rotate_) warn("@rotate although the PRP says rotate = N");
+      break;
+    case K::mirror:
+      if (!mirror_) warn("@mirror although the PRP says mirror = N");
+      break;
+    default: break;
+  }
+  if (software_transform_ && (kind == K::loop || kind == K::rotate || kind == K::mirror || kind == K::change_ref_point))
     warn(fmt::format("{} although the PRP says software_transform = Y", c.name));
 
-  if (is(c, "@compensation") && !comp_exist_) {
+  if (kind == K::compensation && !comp_exist_) {
     if (const toolpath::Value* side = c.find("side"); side && !toolpath::iequals(side->text, "COMP_OFF"))
       throw StreamError(c, fmt::format("compensation {} on a machine without it (comp_exist = N)", side->text));
   }
-  if (is(c, "@proc") || is(c, "@call_proc") || is(c, "@call_prms")) {
+  if (kind == K::proc || kind == K::call_proc || kind == K::call_prms) {
     if (auto label = number(c, "label"); label && !procedures_.contains(static_cast<std::int64_t>(*label)))
       throw StreamError(c, fmt::format("procedure label {} is outside proc_num_min .. proc_num_max ({} .. {})",
                                        *label, procedures_.min.value_or(0), procedures_.max.value_or(0)));
   }
-  if (is(c, "@start_of_file")) {
+  if (kind == K::start_of_file) {
     if (auto n = number(c, "program_number"); n && !programs_.contains(static_cast<std::int64_t>(*n)))
       throw StreamError(c, fmt::format("program number {} is outside prog_num_min .. prog_num_max ({} .. {})", *n,
                                        programs_.min.value_or(0), programs_.max.value_or(0)));
   }
-  if (is(c, "@home_number") && num_homes_) {
+  if (kind == K::home_number && num_homes_) {
     if (auto h = number(c, "home_number"); h && *h > static_cast<double>(*num_homes_))
       warn(fmt::format("home_number {} is above num_homes {}", *h, *num_homes_));
   }
@@ -68,9 +85,12 @@ DefaultPositions::DefaultPositions(toolpath::CommandSource& input, const Machine
 
 bool DefaultPositions::next(toolpath::Command& out) {
   if (!input_.next(out)) return false;
-  if (!out.is_stream_command() || out.find("xpos") || out.find("ypos") || out.find("zpos")) return true;
-  if (start_ && is(out, "@start_program")) set_point(out, *start_);
-  if (end_ && is(out, "@end_program")) set_point(out, *end_);
+  if (!out.is_stream_command()) return true;
+  const CommandKind kind = command_kind(out);
+  if (kind != CommandKind::start_program && kind != CommandKind::end_program) return true;
+  if (out.find("xpos") || out.find("ypos") || out.find("zpos")) return true;
+  if (start_ && kind == CommandKind::start_program) set_point(out, *start_);
+  if (end_ && kind == CommandKind::end_program) set_point(out, *end_);
   return true;
 }
 

@@ -22,6 +22,7 @@ private:
   toolpath::CommandSource& input_;
   WarningSink warn_;
   std::string gen_procs_;
+  bool procs_off_, calls_with_parameters_;  // gen_procs N, D
   bool loop_exist_, rotate_, mirror_, software_transform_, comp_exist_;
   NumberRange programs_, procedures_;
   std::optional<std::int64_t> num_homes_;
