@@ -70,4 +70,31 @@ TEST(CommandSpool, WritesAndReadsAlternate) {
   EXPECT_FALSE(spool.read(c));
 }
 
+// Past a block (1 MiB) records go to the file; the rest stay in memory until flushed. Every record
+// reads back from any offset: in the file, across a block boundary, in memory, larger than a block.
+TEST(CommandSpool, ManyBlocksAndOneHugeRecord) {
+  prp::CommandSpool spool;
+  std::vector<Command> commands;
+  for (int i = 0; i < 40000; ++i)
+    commands.push_back(command(i % 2 ? "@line" : "@arc", {{"xpos", num(i)}, {"ypos", num(-i)}, {"zpos", num(0.5)}},
+                               static_cast<std::size_t>(i)));
+  commands[20000].parameters.push_back({"job_name", Value::make_string(std::string(3 << 20, 'j'))});
+  std::vector<std::int64_t> offsets;
+  for (const auto& c : commands) offsets.push_back(spool.write(c));
+  ASSERT_GT(spool.end(), 4 << 20);
+  Command c;
+  spool.seek(0);
+  for (const auto& expected : commands) {
+    ASSERT_TRUE(spool.read(c));
+    ASSERT_EQ(c, expected);
+  }
+  EXPECT_FALSE(spool.read(c));
+  for (std::size_t i = commands.size(); i-- > 0;) {
+    if (i % 997 != 0 && i != 19999 && i != 20000 && i != 20001 && i + 1 != commands.size()) continue;
+    spool.seek(offsets[i]);
+    ASSERT_TRUE(spool.read(c));
+    EXPECT_EQ(c, commands[i]) << i;
+  }
+}
+
 }  // namespace
