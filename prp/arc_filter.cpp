@@ -12,6 +12,53 @@ using toolpath::geometry::Arc;
 using toolpath::geometry::Direction;
 using toolpath::geometry::Plane;
 
+namespace {
+
+// The parameters plan() reads, found in one pass over the arc's parameters (the first of each
+// name, as with Command::find).
+enum ArcField { kX, kY, kZ, kApos, kBpos, kXcenter, kYcenter, kXrel, kYrel, kZstart, kSize, kPlane, kDirection,
+                kPlaneM, kFieldCount };
+
+int arc_field(std::string_view n) {
+  auto named = [&](std::string_view name) { return toolpath::iequals(n, name); };
+  switch (n.size()) {
+    case 4:
+      if (!toolpath::iequals(n.substr(1), "pos")) return -1;
+      switch (toolpath::ascii_lower(n[0])) {
+        case 'x': return kX;
+        case 'y': return kY;
+        case 'z': return kZ;
+        case 'a': return kApos;
+        case 'b': return kBpos;
+        default: return -1;
+      }
+    case 6: return named("zstart") ? kZstart : -1;
+    case 7: return named("xcenter") ? kXcenter : named("ycenter") ? kYcenter : -1;
+    case 8: return named("arc_size") ? kSize : -1;
+    case 9: return named("arc_plane") ? kPlane : -1;
+    case 11: return named("xcenter_rel") ? kXrel : named("ycenter_rel") ? kYrel : named("arc_plane_m") ? kPlaneM : -1;
+    case 13: return named("arc_direction") ? kDirection : -1;
+    default: return -1;
+  }
+}
+
+struct ArcFields {
+  explicit ArcFields(const toolpath::Command& c) {
+    for (const toolpath::Parameter& p : c.parameters)
+      if (const int f = arc_field(p.name); f >= 0 && !values[f]) values[f] = &p.value;
+  }
+  const toolpath::Value* find(ArcField f) const { return values[f]; }
+  // As prp::number().
+  std::optional<double> number(ArcField f) const {
+    const toolpath::Value* v = values[f];
+    if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return std::nullopt;
+    return v->as_number();
+  }
+  const toolpath::Value* values[kFieldCount] = {};
+};
+
+}  // namespace
+
 ArcSettings ArcSettings::from(const MachineParameters& p) {
   ArcSettings s;
   s.arc_exist = p.logical("arc_exist");
@@ -87,18 +134,19 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind) {
   piece_ = pieces_ = chords_ = 0;
   cuts_.clear();
   five_axis_ = kind == CommandKind::arc_5x;
+  const ArcFields f(c);
   rotary_from_[0] = apos_;
   rotary_from_[1] = bpos_;
-  rotary_to_[0] = number(c, "apos");
-  rotary_to_[1] = number(c, "bpos");
+  rotary_to_[0] = f.number(kApos);
+  rotary_to_[1] = f.number(kBpos);
 
   Plane plane = Plane::XY;
-  if (const toolpath::Value* v = c.find("arc_plane")) {
+  if (const toolpath::Value* v = f.find(kPlane)) {
     auto p = toolpath::geometry::parse_plane(v->text);
     if (!p) throw StreamError(c, fmt::format("arc_plane `{}` is none of XY, YZ, ZX", v->text));
     plane = *p;
   }
-  const toolpath::Value* dir = c.find("arc_direction");
+  const toolpath::Value* dir = f.find(kDirection);
   if (!dir || !(toolpath::iequals(dir->text, "CW") || toolpath::iequals(dir->text, "CCW")))
     throw StreamError(c, "expected arc_direction CW or CCW");
   const Direction direction = toolpath::iequals(dir->text, "CW") ? Direction::CW : Direction::CCW;
@@ -108,15 +156,15 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind) {
   static constexpr std::string_view pos_names[] = {"xpos", "ypos", "zpos"};
   Eigen::Vector3d end;
   for (int i = 0; i < 3; ++i) {
-    auto v = number(c, pos_names[i]);
+    auto v = f.number(static_cast<ArcField>(kX + i));
     if (!v) v = position_.axis(i);
     if (!v) throw StreamError(c, fmt::format("the arc has no {} and the tool position is unknown", pos_names[i]));
     end[i] = *v;
   }
   // Centre and start in the arc plane: xcenter/ycenter and the *_rel values are the plane's first
   // and second coordinates (XY: x y, YZ: y z, ZX: z x).
-  auto cx = number(c, "xcenter"), cy = number(c, "ycenter");
-  auto rx = number(c, "xcenter_rel"), ry = number(c, "ycenter_rel");
+  auto cx = f.number(kXcenter), cy = f.number(kYcenter);
+  auto rx = f.number(kXrel), ry = f.number(kYrel);
   Eigen::Vector3d start, centre;
   for (int k = 0; k < 2; ++k) {
     const int axis = k == 0 ? a.first : a.second;
@@ -129,11 +177,11 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind) {
     start[axis] = rel ? *cen - *rel : here.value_or(*cen);
     if (!rel && !here) throw StreamError(c, "the arc's start is unknown (no xcenter_rel/ycenter_rel)");
   }
-  auto zstart = plane == Plane::XY ? number(c, "zstart") : std::nullopt;
+  auto zstart = plane == Plane::XY ? f.number(kZstart) : std::nullopt;
   start[a.normal] = zstart ? *zstart : position_.axis(a.normal).value_or(end[a.normal]);
   centre[a.normal] = start[a.normal];
 
-  arc_ = toolpath::geometry::make_arc(start, end, centre, plane, direction, number(c, "arc_size"));
+  arc_ = toolpath::geometry::make_arc(start, end, centre, plane, direction, f.number(kSize));
   const ArcSettings& s = settings_;
   const bool helical = std::abs(arc_.rise()) > std::max(s.zero_value, 1e-9);
   const bool in_machine_plane = plane == s.machine_plane;
@@ -143,7 +191,7 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind) {
     return;
   }
   bool tilted = false;  // in the machine's axes the arc lies in none of XY, YZ, ZX
-  if (const toolpath::Value* m = c.find("arc_plane_m")) tilted = !toolpath::geometry::parse_plane(m->text);
+  if (const toolpath::Value* m = f.find(kPlaneM)) tilted = !toolpath::geometry::parse_plane(m->text);
   if (!s.arc_exist || (helical && !s.arc_3d) || (!in_machine_plane && !s.zx_yz) ||
       (s.max_radius && arc_.radius > *s.max_radius) || (five_axis_ && !s.arc_5x) || (tilted && s.main_planes)) {
     chords_ = pieces_ = toolpath::geometry::chord_count(arc_, s.max_angle, s.max_chord);
