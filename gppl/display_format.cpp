@@ -145,6 +145,19 @@ char* write_units(char* p, const DisplayFormat& f, std::uint64_t units, bool neg
   const int int_len = static_cast<int>(point_at - write_integer_digits(point_at, whole));
   const int kept = write_fraction_digits(point_at, fraction, n);
 
+  if (f.plain) {  // the common shapes: [-] digits (a 0 if none) [. kept digits]
+    *p = '-';
+    p += negative ? 1 : 0;
+    *p = '0';
+    p += int_len == 0 ? 1 : 0;
+    std::memcpy(p, point_at - int_len, 20);
+    p += int_len;
+    if (kept == 0 && f.conditional_point) return p;
+    *p++ = '.';
+    std::memcpy(p, point_at, 16);
+    return p + kept;
+  }
+
   // Fraction digits kept: trailing zeros go down to n (/n), unless 'z'; blanks replace them
   // with a trailing blank; option p drops a zero fraction together with the point.
   int frac_len = n;

@@ -45,6 +45,10 @@ struct DisplayFormat {
   bool no_point = false;           // option n: no decimal point, fraction digits still printed
   bool conditional_point = false;  // option p: no point (and no fraction) when the fraction is zero
   bool invert = false;             // option i: the sign is inverted before printing
+  // Derived by the parser: no padding, a sign only when negative, one integer digit at least,
+  // trailing zeros stripped to nothing, a point unless option p drops it ('5.3', '<X>5.3(p)').
+  // The printer lays these out on a short path.
+  bool plain = false;
 
   std::string_view prefix_text() const { return {prefix.data(), prefix_length}; }
   std::string_view postfix_text() const { return {postfix.data(), postfix_length}; }

@@ -47,6 +47,9 @@ public:
       skip_blanks();
     }
     if (pos_ < s_.size()) format_error(423, fmt::format("Invalid format option, unexpected '{}'", s_[pos_]), s_);
+    f_.plain = f_.lead == DisplayFormat::Pad::None && f_.sign == DisplayFormat::Sign::NegativeOnly &&
+               f_.min_int_digits == 1 && f_.min_frac_digits == 0 && f_.trail == DisplayFormat::Pad::None &&
+               !f_.no_point && !f_.delete_if_zero;
     return f_;
   }
 
