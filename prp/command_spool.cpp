@@ -51,9 +51,10 @@ public:
     std::memcpy(&v, take(sizeof v), sizeof v);
     return v;
   }
-  void text(std::string& s) {
+  void text(std::string& s) { s.assign(text()); }
+  std::string_view text() {
     const auto n = get<std::uint32_t>();
-    s.assign(take(n), n);
+    return {take(n), n};
   }
 
 private:
@@ -162,7 +163,7 @@ bool CommandSpool::read(toolpath::Command& out) {
   out.depth = in.get<std::int32_t>();
   out.parameters.resize(in.get<std::uint32_t>());
   for (auto& p : out.parameters) {
-    in.text(p.name);
+    p.rename(in.text());
     toolpath::Value& v = p.value;
     const auto kind_and_flag = in.get<std::uint8_t>();
     v.kind = static_cast<toolpath::ValueKind>(kind_and_flag & 0xf);

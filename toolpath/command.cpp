@@ -2,20 +2,35 @@
 
 namespace toolpath {
 
+// A catalogue name is found by its key alone; any other name can only match a parameter whose key
+// is none, since keyed parameters carry catalogue names.
 const Value* Command::find(std::string_view parameter) const {
+  if (const ParamKey key = param_key(parameter); key != ParamKey::none) return find(key);
   for (const auto& p : parameters)
-    if (iequals(p.name, parameter)) return &p.value;
+    if (p.key == ParamKey::none && iequals(p.name, parameter)) return &p.value;
   return nullptr;
 }
 
 void Command::set(std::string_view parameter, Value value) {
+  const ParamKey key = param_key(parameter);
   for (auto& p : parameters) {
-    if (iequals(p.name, parameter)) {
+    if (key != ParamKey::none ? p.key == key : p.key == ParamKey::none && iequals(p.name, parameter)) {
       p.value = std::move(value);
       return;
     }
   }
-  parameters.push_back(Parameter{std::string(parameter), std::move(value)});
+  parameters.emplace_back(std::string(parameter), std::move(value));  // spelled as given
+}
+
+void Command::set(ParamKey key, Value value) {
+  if (key == ParamKey::none) return;
+  for (auto& p : parameters) {
+    if (p.key == key) {
+      p.value = std::move(value);
+      return;
+    }
+  }
+  parameters.emplace_back(std::string(param_name(key)), std::move(value));
 }
 
 void Command::clear() {

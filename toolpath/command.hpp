@@ -1,18 +1,32 @@
 // One command of the neutral toolpath stream (`@line`, `@arc`, ...), as the engine receives it.
 #pragma once
 
+#include <cassert>
 #include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "toolpath/param_key.hpp"
 #include "toolpath/value.hpp"
 
 namespace toolpath {
 
+// A named value. `key` is the interned form of `name` (param_key.hpp), kept in step by the
+// constructor and rename(): change a name only through these, never by assigning `name`.
 struct Parameter {
+  Parameter() = default;
+  Parameter(std::string name_, Value value_) : name(std::move(name_)), value(std::move(value_)), key(param_key(name)) {}
+
+  // Names the parameter `to` and updates the key, reusing the name's buffer.
+  void rename(std::string_view to) {
+    name.assign(to);
+    key = param_key(to);
+  }
+
   std::string name;
   Value value;
+  ParamKey key = ParamKey::none;
   friend bool operator==(const Parameter&, const Parameter&) = default;
 };
 
@@ -36,10 +50,22 @@ struct Command {
   std::vector<Parameter> parameters;
   std::vector<TraceLine> trace;
 
-  // Parameter lookup by name (case-insensitive); nullptr when absent.
+  // Parameter lookup by name (case-insensitive, the first of that name); nullptr when absent.
+  // find(ParamKey::xpos) is the same as find("xpos") without any string work: filters and the
+  // engine use it on every command. find(ParamKey::none) finds nothing.
   const Value* find(std::string_view parameter) const;
-  // Sets or replaces a parameter.
+  const Value* find(ParamKey key) const {
+    if (key == ParamKey::none) return nullptr;
+    for (const Parameter& p : parameters) {
+      assert(p.key == param_key(p.name) && "a Parameter's name was assigned directly: use rename()");
+      if (p.key == key) return &p.value;
+    }
+    return nullptr;
+  }
+  // Sets or replaces a parameter (the first of that name); a new one goes at the end, named as
+  // given (set(ParamKey) uses the catalogue spelling). set(ParamKey::none, ...) does nothing.
   void set(std::string_view parameter, Value value);
+  void set(ParamKey key, Value value);
   // Empties the command but keeps its buffers, so a reader can refill it without allocating.
   void clear();
 

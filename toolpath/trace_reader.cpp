@@ -183,7 +183,7 @@ void parse_value_into(Value& out, std::string_view text, const Place& where) {
 Parameter& add_parameter(Command& out, std::size_t& used, std::string_view name) {
   if (used == out.parameters.size()) out.parameters.emplace_back();
   Parameter& p = out.parameters[used++];
-  if (p.name != name) p.name.assign(name);  // a reused slot usually held the same name
+  if (p.name != name) p.rename(name);  // a reused slot usually held the same name
   return p;
 }
 

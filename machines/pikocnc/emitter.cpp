@@ -98,7 +98,7 @@ toolpath::Value& Emitter::slot(std::string_view name, toolpath::ValueKind kind) 
   auto& params = current_->parameters;
   if (fill_ == params.size()) params.emplace_back();
   toolpath::Parameter& p = params[fill_++];
-  if (p.name != name) p.name.assign(name);  // a recycled command usually has the same names
+  if (p.name != name) p.rename(name);  // a recycled command usually has the same names
   p.value.kind = kind;
   p.value.flag = toolpath::ChangeFlag::None;
   return p.value;
