@@ -2,12 +2,11 @@
 
 namespace toolpath {
 
-// A catalogue name is found by its key alone; any other name can only match a parameter whose key
-// is none, since keyed parameters carry catalogue names.
+// Plain text comparison, so that it finds any name without hashing it first: callers that look up
+// on every command use find(ParamKey) instead.
 const Value* Command::find(std::string_view parameter) const {
-  if (const ParamKey key = param_key(parameter); key != ParamKey::none) return find(key);
   for (const auto& p : parameters)
-    if (p.key == ParamKey::none && iequals(p.name, parameter)) return &p.value;
+    if (iequals(p.name, parameter)) return &p.value;
   return nullptr;
 }
 
