@@ -40,7 +40,8 @@ std::optional<Directive> parse_directive(std::string_view line) {
   std::string_view s = trim(line);
   if (s.size() < 4 || s.substr(0, 2) != "!!" || s.substr(s.size() - 2) != "!!") return std::nullopt;
   std::string_view body = s.substr(2, s.size() - 4);
-  const std::string quoted = "`" + std::string(line) + "`";
+  std::string quoted(1, '`');  // built by appends: `"`" + std::string` trips GCC 12's -Wrestrict
+  quoted.append(line).push_back('`');
 
   std::string_view verb = take_word(body);
   std::string_view object = take_word(body);

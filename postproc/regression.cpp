@@ -63,7 +63,7 @@ private:
   std::size_t line_ = 0;
 };
 
-std::string quoted(std::string_view s) { return "`" + std::string(s) + "`"; }
+std::string quoted(std::string_view s) { return fmt::format("`{}`", s); }
 
 }  // namespace
 
