@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cstring>
 #include <fstream>
+#include <limits>
 
 namespace toolpath {
 namespace {
@@ -32,9 +33,11 @@ bool is_ident_start(char c) { return has_class(c, kIdentStart); }
 bool is_ident_char(char c) { return has_class(c, kIdentChar); }
 
 std::size_t skip_blanks(std::string_view s, std::size_t i) {
-  // SolidCAM pads its traces with runs of spaces: skip them eight at a time.
-  while (i + 8 <= s.size() && std::memcmp(s.data() + i, "        ", 8) == 0) i += 8;
-  while (i < s.size() && is_blank(s[i])) ++i;
+  // Mostly one blank or none; SolidCAM pads with runs of spaces: skip those eight at a time.
+  while (i < s.size() && is_blank(s[i])) {
+    if (i + 8 <= s.size() && std::memcmp(s.data() + i, "        ", 8) == 0) i += 8;
+    else ++i;
+  }
   return i;
 }
 
@@ -46,9 +49,10 @@ std::string_view trim_right(std::string_view s) {
 // Length of an identifier at the start of `s` (0 if none).
 std::size_t ident_length(std::string_view s) {
   if (s.empty() || !is_ident_start(s[0])) return 0;
-  std::size_t n = 1;
-  while (n < s.size() && is_ident_char(s[n])) ++n;
-  return n;
+  const char* p = s.data() + 1;
+  const char* const end = s.data() + s.size();
+  while (p < end && is_ident_char(*p)) ++p;
+  return static_cast<std::size_t>(p - s.data());
 }
 
 // The length of the name when `s` starts with `identifier:` (how a name:value pair opens in the
@@ -57,7 +61,6 @@ std::size_t pair_name_length(std::string_view s) {
   std::size_t n = ident_length(s);
   return n > 0 && n < s.size() && s[n] == ':' ? n : 0;
 }
-bool starts_with_pair(std::string_view s) { return pair_name_length(s) > 0; }
 
 // Number syntax: [+-] digits [. digits] [e [+-] digits] with at least one digit in the mantissa.
 // The scan also collects the mantissa's digits, so that plain decimals need no second pass.
@@ -68,38 +71,59 @@ struct NumberScan {
   bool negative = false;
   int digits = 0;          // in the mantissa
   int decimals = 0;        // digits after the point
-  std::uint64_t mantissa = 0;  // exact while digits <= 19
+  std::uint64_t mantissa = 0;  // exact while digits <= 19 (wrapped past that)
 };
 
 NumberScan scan_number(std::string_view s) {
   NumberScan n;
-  std::size_t i = 0;
-  if (i < s.size() && (s[i] == '+' || s[i] == '-')) n.negative = s[i++] == '-';
-  auto digit_run = [&](bool after_point) {
-    for (; i < s.size() && is_digit(s[i]); ++i) {
-      if (++n.digits <= 19) n.mantissa = n.mantissa * 10 + static_cast<std::uint64_t>(s[i] - '0');
-      n.decimals += after_point;
-    }
-  };
-  digit_run(false);
-  if (i < s.size() && s[i] == '.') {
+  const char* p = s.data();
+  const char* const end = p + s.size();
+  if (p < end && (*p == '+' || *p == '-')) n.negative = *p++ == '-';
+  // Digits accumulate without a bound check: the mantissa is used only when digits <= 19.
+  std::uint64_t mantissa = 0;
+  unsigned d = 0;
+  const char* start = p;
+  while (p < end && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) mantissa = mantissa * 10 + d, ++p;
+  int digits = static_cast<int>(p - start);
+  if (p < end && *p == '.') {
     n.numeric = true;
-    ++i;
-    digit_run(true);
+    start = ++p;
+    while (p < end && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) mantissa = mantissa * 10 + d, ++p;
+    n.decimals = static_cast<int>(p - start);
+    digits += n.decimals;
   }
-  if (n.digits == 0) return n;
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    std::size_t j = i + 1;
-    if (j < s.size() && (s[j] == '+' || s[j] == '-')) ++j;
-    std::size_t exp_start = j;
-    while (j < s.size() && is_digit(s[j])) ++j;
-    if (j > exp_start) {
+  n.digits = digits;
+  n.mantissa = mantissa;
+  if (digits == 0) return n;
+  if (p < end && (*p == 'e' || *p == 'E')) {
+    const char* q = p + 1;
+    if (q < end && (*q == '+' || *q == '-')) ++q;
+    const char* exp_start = q;
+    while (q < end && is_digit(*q)) ++q;
+    if (q > exp_start) {
       n.numeric = n.exponent = true;
-      i = j;
+      p = q;
     }
   }
-  n.length = i;
+  n.length = static_cast<std::size_t>(p - s.data());
   return n;
+}
+
+// Where an unquoted inline value that starts at `v` ends: at the blanks before the next
+// `name:` (whose name length goes to `next_name`), else at the end of the line. It may hold blanks.
+std::size_t value_end(std::string_view text, std::size_t v, std::size_t& next_name) {
+  for (std::size_t k = v; k < text.size(); ++k) {
+    if (is_blank(text[k])) {
+      const std::size_t m = skip_blanks(text, k);
+      if (const std::size_t name_length = pair_name_length(text.substr(m)); name_length > 0) {
+        next_name = name_length;  // the caller's next pair starts at m = skip_blanks(text, k)
+        return k;
+      }
+      k = m - 1;
+    }
+  }
+  next_name = 0;
+  return text.size();
 }
 
 // The exact double of a scanned plain decimal when its mantissa (at most 19 digits) is below 2^53
@@ -124,6 +148,50 @@ struct Place {
   }
 };
 
+// The change flag written right after a number (`10T`, `10F`); None for anything else.
+ChangeFlag flag_letter(char c) {
+  switch (c) {
+    case 'T': case 't': return ChangeFlag::Changed;
+    case 'F': case 'f': return ChangeFlag::Unchanged;
+    default: return ChangeFlag::None;
+  }
+}
+
+// Stores a scanned number that needs no from_chars (an integer of up to 18 digits, or a decimal
+// fast_decimal takes) into `out`; false, and `out` untouched, for any other.
+bool store_exact_number(Value& out, const NumberScan& n, ChangeFlag flag) {
+  if (!n.numeric) {
+    if (n.digits > 18) return false;
+    const auto magnitude = static_cast<std::int64_t>(n.mantissa);  // exact in an int64
+    out.kind = ValueKind::Integer;
+    out.integer = n.negative ? -magnitude : magnitude;
+  } else {
+    double v;
+    if (!fast_decimal(n, v)) return false;
+    out.kind = ValueKind::Numeric;
+    out.numeric = v;
+  }
+  out.flag = flag;
+  return true;
+}
+
+// Stores the scanned number `digits` (its text, without the flag) into `out`.
+void store_number(Value& out, const NumberScan& n, std::string_view digits, ChangeFlag flag, const Place& where) {
+  if (store_exact_number(out, n, flag)) return;
+  const char* first = digits.data() + (digits.front() == '+' ? 1 : 0);
+  const char* last = digits.data() + digits.size();
+  out.flag = flag;
+  if (!n.numeric) {
+    out.kind = ValueKind::Integer;
+    auto [ptr, ec] = std::from_chars(first, last, out.integer);
+    if (ec != std::errc() || ptr != last) where.fail(0, "integer out of range: " + std::string(digits));
+    return;
+  }
+  out.kind = ValueKind::Numeric;
+  auto [ptr, ec] = std::from_chars(first, last, out.numeric);
+  if (ec != std::errc() || ptr != last) where.fail(0, "number out of range: " + std::string(digits));
+}
+
 // Parses `text` into `out`, reusing its string buffer.
 void parse_value_into(Value& out, std::string_view text, const Place& where) {
   text = trim_right(text);
@@ -141,32 +209,9 @@ void parse_value_into(Value& out, std::string_view text, const Place& where) {
     return;
   }
   if (const NumberScan n = scan_number(text); n.length > 0) {
-    std::string_view rest = text.substr(n.length);
-    ChangeFlag flag = ChangeFlag::None;
-    if (rest == "T" || rest == "t") flag = ChangeFlag::Changed;
-    else if (rest == "F" || rest == "f") flag = ChangeFlag::Unchanged;
-    if (rest.empty() || flag != ChangeFlag::None) {
-      std::string_view digits = text.substr(0, n.length);
-      const char* first = digits.data() + (digits.front() == '+' ? 1 : 0);
-      const char* last = digits.data() + digits.size();
-      out.flag = flag;
-      if (!n.numeric) {
-        out.kind = ValueKind::Integer;
-        if (n.digits <= 18) {  // exact in an int64
-          const auto magnitude = static_cast<std::int64_t>(n.mantissa);
-          out.integer = n.negative ? -magnitude : magnitude;
-          return;
-        }
-        auto [ptr, ec] = std::from_chars(first, last, out.integer);
-        if (ec != std::errc() || ptr != last) where.fail(0, "integer out of range: " + std::string(digits));
-        return;
-      }
-      out.kind = ValueKind::Numeric;
-      if (fast_decimal(n, out.numeric)) return;
-      auto [ptr, ec] = std::from_chars(first, last, out.numeric);
-      if (ec != std::errc() || ptr != last) where.fail(0, "number out of range: " + std::string(digits));
-      return;
-    }
+    const std::size_t rest = text.size() - n.length;  // a number, alone or with its change flag
+    const ChangeFlag flag = rest == 1 ? flag_letter(text.back()) : ChangeFlag::None;
+    if (rest == 0 || flag != ChangeFlag::None) return store_number(out, n, text.substr(0, n.length), flag, where);
   }
   if (iequals(text, "true") || iequals(text, "false")) {
     out.kind = ValueKind::Logical;
@@ -179,12 +224,41 @@ void parse_value_into(Value& out, std::string_view text, const Place& where) {
   out.text.assign(text);
 }
 
-// The next parameter slot of `out`, reusing the buffers of an earlier command's parameters.
-Parameter& add_parameter(Command& out, std::size_t& used, std::string_view name) {
+// Case-sensitive equality of short names without a call to memcmp: words of 8 or 4 bytes, the
+// last one overlapping the one before.
+bool same_bytes(std::string_view a, std::string_view b) {
+  const std::size_t n = a.size();
+  if (n != b.size()) return false;
+  const char *p = a.data(), *q = b.data();
+  auto differ = [](const char* x, const char* y, auto word) {
+    decltype(word) u, v;
+    std::memcpy(&u, x, sizeof u);
+    std::memcpy(&v, y, sizeof v);
+    return u != v;
+  };
+  if (n >= 8) {
+    for (std::size_t i = 0; i + 8 < n; i += 8)
+      if (differ(p + i, q + i, std::uint64_t{})) return false;
+    return !differ(p + n - 8, q + n - 8, std::uint64_t{});
+  }
+  if (n >= 4) return !differ(p, q, std::uint32_t{}) && !differ(p + n - 4, q + n - 4, std::uint32_t{});
+  for (std::size_t i = 0; i < n; ++i)
+    if (p[i] != q[i]) return false;
+  return true;
+}
+
+[[gnu::noinline]] Parameter& new_slot(Command& out, std::size_t& used, std::string_view name) {
   if (used == out.parameters.size()) out.parameters.emplace_back();
   Parameter& p = out.parameters[used++];
-  if (p.name != name) p.rename(name);  // a reused slot usually held the same name
+  p.rename(name);
   return p;
+}
+
+// The next parameter slot of `out`, reusing the buffers of an earlier command's parameters. A
+// reused slot often held the same name: then nothing is copied and the key stays.
+Parameter& add_parameter(Command& out, std::size_t& used, std::string_view name) {
+  if (used < out.parameters.size() && same_bytes(out.parameters[used].name, name)) return out.parameters[used++];
+  return new_slot(out, used, name);
 }
 
 }  // namespace
@@ -211,25 +285,32 @@ void TraceReader::fail(std::size_t column, const std::string& message) const {
   throw InputError({file_, line_number_, column}, message);
 }
 
-// Reads the next line into line_ (without "\n" or "\r\n"); false at the end of the input.
+// Points line_ at the next line (without "\n" or "\r\n"), inside the chunk when the line is
+// whole there, else in carry_; false at the end of the input.
 bool TraceReader::read_line() {
-  line_.clear();
+  carry_.clear();
   for (;;) {
     if (buffer_pos_ < buffer_.size()) {
       const char* start = buffer_.data() + buffer_pos_;
       const std::size_t avail = buffer_.size() - buffer_pos_;
       if (const void* nl = std::memchr(start, '\n', avail)) {
         const std::size_t len = static_cast<const char*>(nl) - start;
-        line_.append(start, len);
         buffer_pos_ += len + 1;
+        if (carry_.empty()) {
+          line_ = {start, len};
+        } else {
+          carry_.append(start, len);
+          line_ = carry_;
+        }
         break;
       }
-      line_.append(start, avail);
+      carry_.append(start, avail);  // the line goes on in the next chunk
       buffer_pos_ = buffer_.size();
     }
     if (stream_done_) {
-      if (line_.empty()) return false;
-      break;  // last line without a trailing newline
+      if (carry_.empty()) return false;
+      line_ = carry_;  // last line without a trailing newline
+      break;
     }
     buffer_.resize(kChunk);
     in_.read(buffer_.data(), static_cast<std::streamsize>(kChunk));
@@ -239,7 +320,7 @@ bool TraceReader::read_line() {
     if (buffer_.empty()) stream_done_ = true;
     if (in_.bad()) fail(1, "read error");
   }
-  if (!line_.empty() && line_.back() == '\r') line_.pop_back();
+  if (!line_.empty() && line_.back() == '\r') line_.remove_suffix(1);
   ++line_number_;
   return true;
 }
@@ -267,12 +348,12 @@ bool TraceReader::next(Command& out) {
   while (read_line()) {
     std::size_t i = skip_blanks(line_, 0);
     if (i == line_.size() || line_[i] == ';') continue;  // blank lines and `;` comments
-    std::string_view rest = std::string_view(line_).substr(i);
+    std::string_view rest = line_.substr(i);
     if (rest.front() == '@' || (rest.front() == '(' && rest.find(")@") != std::string_view::npos)) {
       have_line_ = true;  // the next command's header
       break;
     }
-    parse_body_line(out, first);
+    parse_body_line(out, first, i);
     first = false;
   }
   out.parameters.resize(used_parameters_);
@@ -293,8 +374,16 @@ bool TraceReader::parse_header(Command& out) {
     if (j < s.size() && s[j] == '-') ++j;
     while (j < s.size() && is_digit(s[j])) ++j;
     if (j == start || j >= s.size() || s[j] != ')') fail(i + 2, "expected a number and `)` in the command header");
-    auto [p, ec] = std::from_chars(s.data() + start, s.data() + j, number);
-    if (ec != std::errc()) fail(i + 2, "number out of range in the command header");
+    const bool negative = s[start] == '-';
+    const std::size_t digits = j - start - negative;
+    if (digits > 0 && digits <= std::numeric_limits<long>::digits10) {  // no from_chars call for `(1)`
+      number = 0;
+      for (std::size_t d = start + negative; d < j; ++d) number = number * 10 + (s[d] - '0');
+      if (negative) number = -number;
+    } else {
+      auto [p, ec] = std::from_chars(s.data() + start, s.data() + j, number);
+      if (ec != std::errc()) fail(i + 2, "number out of range in the command header");
+    }
     has_number = true;
     i = j + 1;
   }
@@ -314,7 +403,7 @@ bool TraceReader::parse_header(Command& out) {
     }
     name_may_be_cut_ = (i == after_name);  // SolidCAM cuts long names where `==>` begins
     std::size_t text_start = i + 3;
-    parse_pairs(out, std::string_view(line_).substr(text_start), text_start + 1, TraceLine::Kind::Partial);
+    parse_pairs(out, line_.substr(text_start), text_start + 1, TraceLine::Kind::Partial);
     return true;
   }
   name_may_be_cut_ = false;
@@ -322,9 +411,9 @@ bool TraceReader::parse_header(Command& out) {
   return true;
 }
 
-void TraceReader::parse_body_line(Command& out, bool first_after_header) {
+// `i`: the first byte of line_ that is not a blank.
+void TraceReader::parse_body_line(Command& out, bool first_after_header, std::size_t i) {
   std::string_view s = line_;
-  std::size_t i = skip_blanks(s, 0);
 
   // A cut name continues at column 4 of the next line: `   ut                 > N290 S1910`.
   if (first_after_header && name_may_be_cut_ && i == 3 && is_ident_char(s[i])) {
@@ -367,19 +456,33 @@ void TraceReader::parse_body_line(Command& out, bool first_after_header) {
   fail(i + 1, "expected `name : value`, `..>` continuation, `> ` output line or a command header");
 }
 
+// The length of the `name:` that starts at `at` in `text` (0 if there is none), for the pair that
+// will fill parameter slot `slot` of `out`. A recycled command mostly repeats the names of the
+// one before in order, so the slot's name is tried first: a keyed name is a known identifier, and
+// followed by `:` it is the whole name there.
+std::size_t TraceReader::pair_name_at(const Command& out, std::size_t slot, std::string_view text, std::size_t at) const {
+  if (slot < out.parameters.size()) {
+    const Parameter& p = out.parameters[slot];
+    const std::size_t n = p.name.size();
+    if (p.key != ParamKey::none && at + n < text.size() && text[at + n] == ':' && same_bytes(text.substr(at, n), p.name))
+      return n;
+  }
+  return pair_name_length(text.substr(at));
+}
+
 // The text after `==>` or `..>`: blank-separated `name:value` pairs, or free text kept as `otherwise`.
 void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t column, TraceLine::Kind otherwise) {
   std::size_t i = skip_blanks(text, 0);
   if (i == text.size()) return;
-  if (!starts_with_pair(text.substr(i))) {
+  std::size_t next_name = pair_name_at(out, used_parameters_, text, i);  // the length of the name at i, once measured
+  if (next_name == 0) {
     // Free text: the whole remainder without the one separating blank.
     std::string_view kept = text.substr(text.front() == ' ' ? 1 : 0);
     out.trace.push_back({otherwise, std::string(otherwise == TraceLine::Kind::Partial ? kept : trim_right(kept))});
     return;
   }
-  std::size_t next_name = 0;  // the length of the name at i, when the previous value's end measured it
   while (i < text.size()) {
-    std::size_t n = next_name > 0 ? next_name : ident_length(text.substr(i));
+    std::size_t n = next_name > 0 ? next_name : pair_name_at(out, used_parameters_, text, i);
     next_name = 0;
     if (n == 0 || i + n >= text.size() || text[i + n] != ':')
       fail(column + i, "expected `name:value`");
@@ -396,19 +499,27 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
         if (k + 1 == text.size() || is_blank(text[k + 1])) break;
       }
       end = k + 1;
-    } else {
-      // An unquoted value runs to the next ` name:` (it may hold blanks) or the end of the line.
-      end = text.size();
-      for (std::size_t k = v; k < text.size(); ++k) {
-        if (is_blank(text[k])) {
-          std::size_t m = skip_blanks(text, k);
-          if (std::size_t name_length = pair_name_length(text.substr(m)); name_length > 0) {
-            end = k;
-            next_name = name_length;  // i will be m: skip_blanks(text, end)
-            break;
-          }
+    } else if (const NumberScan number = scan_number(text.substr(v)); number.length > 0) {
+      // The common case, a number (with its change flag) then blanks and the next `name:` or the
+      // end of the line: stored at once. Anything else after the digits takes the general path.
+      std::size_t k = v + number.length;
+      const ChangeFlag flag = k < text.size() ? flag_letter(text[k]) : ChangeFlag::None;
+      if (flag != ChangeFlag::None) ++k;
+      if (k == text.size() || is_blank(text[k])) {
+        std::size_t m = k == text.size() ? k : k + 1;
+        if (m < text.size() && is_blank(text[m])) m = skip_blanks(text, m);
+        next_name = m == text.size() ? 0 : pair_name_at(out, used_parameters_ + 1, text, m);
+        if (m == text.size() || next_name > 0) {
+          Value& value = add_parameter(out, used_parameters_, name).value;
+          if (!store_exact_number(value, number, flag))
+            store_number(value, number, text.substr(v, number.length), flag, Place{file_, line_number_, column + v});
+          i = m;
+          continue;
         }
       }
+      end = value_end(text, v, next_name);
+    } else {
+      end = value_end(text, v, next_name);
     }
     Parameter& p = add_parameter(out, used_parameters_, name);
     parse_value_into(p.value, text.substr(v, end - v), Place{file_, line_number_, column + v});

@@ -38,7 +38,8 @@ private:
   bool read_line();
   [[noreturn]] void fail(std::size_t column, const std::string& message) const;
   bool parse_header(Command& out);
-  void parse_body_line(Command& out, bool first_after_header);
+  void parse_body_line(Command& out, bool first_after_header, std::size_t first_non_blank);
+  std::size_t pair_name_at(const Command& out, std::size_t slot, std::string_view text, std::size_t at) const;
   void parse_pairs(Command& out, std::string_view text, std::size_t column, TraceLine::Kind otherwise);
 
   std::unique_ptr<std::istream> owned_;
@@ -47,7 +48,8 @@ private:
   std::string buffer_;           // raw bytes read from the stream
   std::size_t buffer_pos_ = 0;
   bool stream_done_ = false;
-  std::string line_;             // the current line, without its line end
+  std::string_view line_;        // the current line, without its line end: in buffer_ or carry_
+  std::string carry_;            // a line cut by the end of a chunk, put together
   std::size_t line_number_ = 0;
   bool have_line_ = false;       // line_ holds a header not yet consumed
   std::size_t next_index_ = 0;

@@ -1,0 +1,122 @@
+// The reader's inline-layout fast path (a number stored as soon as the next `name:` is seen) must
+// give exactly what the general rule gives: the value runs to the blanks before the next `name:`
+// and is parsed by parse_value. The reference below applies that rule the slow way.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "toolpath/trace_reader.hpp"
+
+namespace {
+
+using toolpath::Parameter;
+
+// The parameters of a one-command inline trace, or the error text.
+struct Outcome {
+  std::vector<Parameter> parameters;
+  std::string error;
+  friend bool operator==(const Outcome&, const Outcome&) = default;
+};
+
+std::ostream& operator<<(std::ostream& os, const Outcome& o) {
+  if (!o.error.empty()) return os << "error: " << o.error;
+  for (const Parameter& p : o.parameters)
+    os << p.name << "=[" << toolpath::kind_name(p.value.kind) << ' ' << p.value.integer << ' ' << p.value.numeric << " '"
+       << p.value.text << "' " << static_cast<int>(p.value.flag) << "] ";
+  return os;
+}
+
+Outcome read(const std::string& text) {
+  std::istringstream in(text);
+  toolpath::TraceReader reader(in, "t.trace");
+  toolpath::Command c;
+  Outcome o;
+  try {
+    while (reader.next(c)) o.parameters.insert(o.parameters.end(), c.parameters.begin(), c.parameters.end());
+  } catch (const toolpath::InputError& e) {
+    o.error = e.what();
+  }
+  return o;
+}
+
+bool blank(char c) { return c == ' ' || c == '\t'; }
+bool ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9'); }
+
+std::size_t pair_name(const std::string& s, std::size_t at) {
+  if (at >= s.size() || !ident_start(s[at])) return 0;
+  std::size_t n = 1;
+  while (at + n < s.size() && ident_char(s[at + n])) ++n;
+  return at + n < s.size() && s[at + n] == ':' ? n : 0;
+}
+
+// The pairs of `text` (what follows `==>` on line 1, whose first byte is in column `column`),
+// one unquoted value at a time, by the documented rule.
+Outcome reference(const std::string& text, std::size_t column) {
+  Outcome o;
+  std::size_t i = 0;
+  while (i < text.size() && blank(text[i])) ++i;
+  try {
+    while (i < text.size()) {
+      const std::size_t n = pair_name(text, i);
+      if (n == 0) throw toolpath::InputError({"t.trace", 1, column + i}, "expected `name:value`");
+      const std::size_t v = i + n + 1;
+      std::size_t end = text.size(), next = text.size();
+      for (std::size_t k = v; k < text.size(); ++k) {
+        if (!blank(text[k])) continue;
+        std::size_t m = k;
+        while (m < text.size() && blank(text[m])) ++m;
+        if (pair_name(text, m) > 0) {
+          end = k;
+          next = m;
+          break;
+        }
+      }
+      o.parameters.emplace_back(text.substr(i, n), toolpath::parse_value(text.substr(v, end - v), {"t.trace", 1, column + v}));
+      i = next;
+    }
+  } catch (const toolpath::InputError& e) {
+    o.parameters.clear();
+    o.error = e.what();
+  }
+  return o;
+}
+
+void check(const std::string& pairs) {
+  const std::string header = "(1)@c ==>";
+  Outcome got = read(header + pairs + "\n");
+  if (!got.error.empty()) got.parameters.clear();
+  EXPECT_EQ(got, reference(pairs, header.size() + 1)) << '`' << pairs << '`';
+}
+
+TEST(TraceReaderInline, NumbersAsTheGeneralRuleReadsThem) {
+  const char* values[] = {"0", "-0", "+7", "12", "-12", "007", "123456789012345678", "1234567890123456789",
+                          "-9223372036854775808", "9223372036854775807", "99999999999999999999", "1.5", "-0.5",
+                          ".5", "5.", "-.5", "1e5", "1E-3", "1.5e+2", "2e", "2e+", "0.1", "0.30000000000000004",
+                          "123456789012345.6", "1234567890123456789.5", "9007199254740993", "9007199254740993.0",
+                          "9007199254740993.5", "1.7976931348623157e308", "1e400", "4.9e-324", "1e-400",
+                          "0.000000000000000000000001", "10T", "10F", "1.5t", "1.5f", "10TT", "10x", "1.2.3", "-",
+                          "+", ".", "12 34", "1.5 T", "12abc", "CW", "TRUE", "1:2", "1x:2", "3.0e1T"};
+  for (const char* v : values) {
+    for (const char* after : {"", "   ", " b:1", "    b:1.0", "\tb:2 ", " 7", " b c:1"}) {
+      check(std::string(" a:") + v + after);
+      check(std::string(" a:1 x:") + v + after);
+    }
+  }
+}
+
+TEST(TraceReaderInline, RandomPairs) {
+  std::mt19937 rng(20261122);
+  const std::string alphabet = "0123456789+-.eETFtf x:ab\t";
+  for (int round = 0; round < 30000; ++round) {
+    std::string pairs = " a:";
+    const std::size_t length = rng() % 14;
+    for (std::size_t k = 0; k < length; ++k) pairs += alphabet[rng() % alphabet.size()];
+    check(pairs);
+  }
+}
+
+}  // namespace
