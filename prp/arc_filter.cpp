@@ -101,7 +101,7 @@ bool ArcFilter::next(toolpath::Command& out) {
     if (pieces_ > 0) {
       sets_.prepare(out, arc_, history_);
       history_.observe(out, kind);
-      std::swap(original_, out);
+      swap(original_, out);
       emit(out);
       return true;
     }

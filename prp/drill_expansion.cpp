@@ -26,7 +26,7 @@ bool DrillExpansion::needed(const MachineParameters& params) {
 bool DrillExpansion::next(toolpath::Command& out) {
   for (;;) {
     if (!pending_.empty()) {
-      std::swap(out, pending_.front());
+      swap(out, pending_.front());
       pending_.pop_front();
       return true;
     }

@@ -23,7 +23,7 @@ double best_cpos(double prev_cpos, double first) {
 bool InitCpos::next(toolpath::Command& out) {
   if (has_held_) {
     has_held_ = false;
-    std::swap(out, held_);
+    swap(out, held_);
   } else if (!input_.next(out)) {
     return false;
   } else if (out.is_stream_command()) {
@@ -33,7 +33,7 @@ bool InitCpos::next(toolpath::Command& out) {
     if (new_job_ && is_4x_move(out) && c) {
       new_job_ = false;
       if (cpos_) {
-        std::swap(held_, out);
+        swap(held_, out);
         has_held_ = true;
         out.clear();
         out.name = "@init_cpos";

@@ -20,7 +20,7 @@ ModeCommands::ModeCommands(toolpath::CommandSource& input, const MachineParamete
 bool ModeCommands::next(toolpath::Command& out) {
   if (has_held_) {
     has_held_ = false;
-    std::swap(out, held_);
+    swap(out, held_);
     return true;
   }
   if (!input_.next(out)) return false;
@@ -38,7 +38,7 @@ bool ModeCommands::next(toolpath::Command& out) {
     if (warn_) warn_(out, fmt::format("the PRP says {} but the toolpath sends no {} before its first motion", why_, mode_));
     return true;
   }
-  std::swap(held_, out);
+  swap(held_, out);
   has_held_ = true;
   out.clear();
   out.name = mode_;

@@ -57,7 +57,7 @@ bool ProcedureGeneration::next(toolpath::Command& out) {
       main_.reset();
       if (has_held_) {
         has_held_ = false;
-        std::swap(out, held_);
+        swap(out, held_);
         return true;
       }
       return input_.next(out);
@@ -79,7 +79,7 @@ bool ProcedureGeneration::collect() {
     const K kind = command_kind(c);
     if (c.is_stream_command() && has(kStructure, kind)) {
       if (jobs_.empty() && !in_job) {  // a structured toolpath: hand it on as it is
-        std::swap(held_, c);
+        swap(held_, c);
         has_held_ = true;
         main_->seek(0);
         bodies_.reset();
@@ -202,7 +202,7 @@ void ProcedureGeneration::bracket(toolpath::Command& out, const char* name, std:
 
 bool ProcedureGeneration::next_main(toolpath::Command& out) {
   if (!queue_.empty()) {
-    std::swap(out, queue_.front());
+    swap(out, queue_.front());
     queue_.pop_front();
     return true;
   }
@@ -242,10 +242,10 @@ bool ProcedureGeneration::next_main(toolpath::Command& out) {
     out.set("first_user_proc", toolpath::Value::make_integer(last_label_ + 1));
   }
   if (kind == K::end_of_file && !bodies_sent_) {
-    std::swap(end_of_file_, out);
+    swap(end_of_file_, out);
     has_end_of_file_ = true;
     if (start_next_procedure()) return next(out);
-    std::swap(out, end_of_file_);
+    swap(out, end_of_file_);
     has_end_of_file_ = false;
   }
   return true;
@@ -289,7 +289,7 @@ bool ProcedureGeneration::start_next_procedure() {
 bool ProcedureGeneration::next_body(toolpath::Command& out) {
   for (;;) {
     if (!queue_.empty()) {
-      std::swap(out, queue_.front());
+      swap(out, queue_.front());
       queue_.pop_front();
       return true;
     }
@@ -336,7 +336,7 @@ bool ProcedureGeneration::next_body(toolpath::Command& out) {
 bool ProcedureGeneration::next_points(toolpath::Command& out) {
   for (;;) {
     if (!queue_.empty()) {
-      std::swap(out, queue_.front());
+      swap(out, queue_.front());
       queue_.pop_front();
       return true;
     }

@@ -5,7 +5,7 @@
 namespace prp {
 
 bool ShortLineFilter::hand_out(toolpath::Command& out, toolpath::Command& from) {
-  std::swap(out, from);
+  swap(out, from);
   sent_.update(out);
   return true;
 }
@@ -34,7 +34,7 @@ bool ShortLineFilter::next(toolpath::Command& out) {
       // same last position sent.
       has_held_ = false;
       if (is_short(current_)) {
-        std::swap(held_, current_);
+        swap(held_, current_);
         has_held_ = true;
         continue;
       }
@@ -42,7 +42,7 @@ bool ShortLineFilter::next(toolpath::Command& out) {
     }
     if (has_held_) {  // the contour ends here: its last (short) line is kept
       has_held_ = false;
-      std::swap(queued_, current_);
+      swap(queued_, current_);
       has_queued_ = true;
       return hand_out(out, held_);
     }

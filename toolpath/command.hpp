@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "toolpath/param_key.hpp"
@@ -71,6 +72,17 @@ struct Command {
 
   // Depth 0 and 1 are commands of the stream; deeper ones only record what the original post did.
   bool is_stream_command() const { return depth <= 1; }
+
+  // Exchanges member by member: sources hand commands over by swapping buffers, once per command
+  // per stage, and std::swap's three moves cost several times more.
+  void swap(Command& other) noexcept {
+    name.swap(other.name);
+    std::swap(index, other.index);
+    std::swap(depth, other.depth);
+    parameters.swap(other.parameters);
+    trace.swap(other.trace);
+  }
+  friend void swap(Command& a, Command& b) noexcept { a.swap(b); }
 
   friend bool operator==(const Command&, const Command&) = default;
 };

@@ -51,9 +51,9 @@ void PrefetchSource::work() {
 bool PrefetchSource::next(Command& out) {
   for (;;) {
     if (holding_) {
-      Batch& b = ring_[released_ % ring_.size()];
+      Batch& b = *current_;
       if (position_ < b.count) {
-        std::swap(out, b.commands[position_++]);  // the worker refills the slot with out's buffers
+        swap(out, b.commands[position_++]);  // the worker refills the slot with out's buffers
         return true;
       }
       if (b.last) {
@@ -73,6 +73,7 @@ bool PrefetchSource::next(Command& out) {
     std::unique_lock lock(mutex_);
     changed_.wait(lock, [&] { return filled_ > released_; });
     holding_ = true;
+    current_ = &ring_[released_ % ring_.size()];
     position_ = 0;
   }
 }

@@ -51,6 +51,7 @@ private:
   std::condition_variable changed_;
   // The reader's side (only next() touches these).
   bool holding_ = false;  // ring_[released_ % size] is being read
+  Batch* current_ = nullptr;  // that batch (no division per command)
   std::size_t position_ = 0;
   bool finished_ = false;
   std::thread worker_;  // last: starts once everything above is ready

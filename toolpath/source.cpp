@@ -6,7 +6,7 @@ namespace toolpath {
 
 bool LookaheadSource::next(Command& out) {
   if (has_buffered_) {
-    std::swap(out, buffered_);  // hand over the buffered command; `buffered_` keeps `out`'s buffers
+    swap(out, buffered_);  // hand over the buffered command; `buffered_` keeps `out`'s buffers
     has_buffered_ = false;
     return true;
   }

@@ -43,7 +43,7 @@ void Emitter::add(std::string_view name) {
 bool Emitter::pop(toolpath::Command& out, std::size_t& line) {
   finish_command();
   if (empty()) return false;
-  std::swap(out, queue_[head_]);
+  swap(out, queue_[head_]);
   out.index = next_index_++;
   line = lines_[head_];
   if (++head_ == tail_) {

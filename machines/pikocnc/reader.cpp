@@ -28,7 +28,7 @@ bool PikoReader::pull(toolpath::Command& out, std::size_t& line) {
 
 bool PikoReader::next(toolpath::Command& out) {
   if (!pending_.empty()) {
-    std::swap(out, pending_.front().command);
+    swap(out, pending_.front().command);
     line_ = pending_.front().line;
     pending_.pop_front();
   } else if (!pull(out, line_)) {
