@@ -188,6 +188,7 @@ std::uint32_t Compiler::constant(Value v, SourcePos pos) {
   program_->constants.push_back(std::move(v));
   Node n;
   n.kind = NodeKind::Constant;
+  n.simple = true;
   n.a = std::uint32_t(program_->constants.size() - 1);
   n.pos = pos;
   program_->nodes.push_back(n);
@@ -228,6 +229,7 @@ std::uint32_t Compiler::expression(const SyntaxNode& n, Context& ctx) {
     Node node;
     node.kind = NodeKind::Variable;
     node.a = reference(n, ctx, false);
+    node.simple = program_->refs[node.a].indices == kNone;
     node.pos = pos;
     program_->nodes.push_back(node);
     return std::uint32_t(program_->nodes.size() - 1);
@@ -237,6 +239,7 @@ std::uint32_t Compiler::expression(const SyntaxNode& n, Context& ctx) {
     node.kind = NodeKind::Attribute;
     node.active_attribute = n.children[0]->is_type<g::kw_active>();
     node.a = reference(*n.children[1], ctx, false);
+    node.simple = program_->refs[node.a].indices == kNone;
     node.pos = pos;
     program_->nodes.push_back(node);
     return std::uint32_t(program_->nodes.size() - 1);

@@ -59,13 +59,19 @@ bool compare(BinaryOp op, const T& a, const T& b) {
   }
 }
 
+// to_numeric / to_integer of a value known not to be a string (they cannot fail then).
+double number_of(const Value& v) {
+  return v.type == Type::Numeric ? v.numeric : v.type == Type::Integer ? double(v.integer) : v.logical ? 1.0 : 0.0;
+}
+std::int64_t integer_of(const Value& v) { return v.type == Type::Integer ? v.integer : v.logical ? 1 : 0; }
+
 }  // namespace
 
 void Interpreter::State::eval(std::uint32_t index, Value& out) {
   const Node& n = program.nodes[index];
   switch (n.kind) {
-    case NodeKind::Constant: out = program.constants[n.a]; return;
-    case NodeKind::Variable: out = element(program.refs[n.a]).value; return;
+    case NodeKind::Constant: copy_value(out, program.constants[n.a]); return;
+    case NodeKind::Variable: copy_value(out, element(program.refs[n.a]).value); return;
     case NodeKind::Attribute: {
       const Cell& c = element(program.refs[n.a]);
       set_logical(out, n.active_attribute ? c.active : c.changed);
@@ -107,6 +113,30 @@ void Interpreter::State::eval(std::uint32_t index, Value& out) {
 }
 
 bool Interpreter::State::condition(std::uint32_t node) {
+  // The usual tests read their operands in place: `if x gt 5`, `if a eq b`, `if flag`, `if change(x)`.
+  const Node& n = program.nodes[node];
+  switch (n.kind) {
+    case NodeKind::Binary: {
+      if (!is_relation(n.op)) break;
+      const Value* left = operand(program.nodes[n.a]);
+      const Value* right = left ? operand(program.nodes[n.b]) : nullptr;
+      if (!right || left->type == Type::String || right->type == Type::String) break;
+      // The type rules of binary(): numeric when either side is; else integers (a logical is 0 or 1).
+      if (left->type == Type::Numeric || right->type == Type::Numeric)
+        return compare(n.op, number_of(*left), number_of(*right));
+      return compare(n.op, integer_of(*left), integer_of(*right));
+    }
+    case NodeKind::Variable:
+      if (n.simple) return to_logical(cell(program.refs[n.a]).value);
+      break;
+    case NodeKind::Attribute:
+      if (n.simple) {
+        const Cell& c = cell(program.refs[n.a]);
+        return n.active_attribute ? c.active : c.changed;
+      }
+      break;
+    default: break;
+  }
   Value& v = push_scratch();
   eval(node, v);
   const bool result = to_logical(v);

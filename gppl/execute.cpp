@@ -44,11 +44,15 @@ Flow Interpreter::State::execute(std::uint32_t procedure) {
     switch (in.op) {
       case OpCode::Nop: ++pc; break;
       case OpCode::Assign: {
-        Value& v = push_scratch();
-        eval(in.b, v);
         const VarRef& ref = program.refs[in.a];
-        assign(element(ref), v, ChangeOverride::Compute, &ref);
-        pop_scratch();
+        if (const Value* x = operand(program.nodes[in.b])) {  // a constant or a scalar: no copy
+          assign(element(ref), *x, ChangeOverride::Compute, &ref);
+        } else {
+          Value& v = push_scratch();
+          eval(in.b, v);
+          assign(element(ref), v, ChangeOverride::Compute, &ref);
+          pop_scratch();
+        }
         ++pc;
         break;
       }

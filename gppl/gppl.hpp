@@ -157,6 +157,12 @@ public:
   // Host assignment: converts to the variable's type, sets `change` (or forces it) and active=TRUE.
   // Throws Error on an impossible conversion.
   void assign(VariableId id, const Value& value, ChangeOverride change = ChangeOverride::Compute);
+  // assign() with a Value of that type, without building one: the engine's path for every
+  // parameter of every command (a number into a variable of its type costs a few instructions).
+  void assign_integer(VariableId id, std::int64_t value, ChangeOverride change = ChangeOverride::Compute);
+  void assign_numeric(VariableId id, double value, ChangeOverride change = ChangeOverride::Compute);
+  void assign_logical(VariableId id, bool value, ChangeOverride change = ChangeOverride::Compute);
+  void assign_string(VariableId id, std::string_view value, ChangeOverride change = ChangeOverride::Compute);
   // Host assignment to one element of a host array (chng_cond<<3,n>>); indices are 1-based.
   void assign_element(VariableId id, std::span<const int> indices, const Value& value,
                       ChangeOverride change = ChangeOverride::Compute);

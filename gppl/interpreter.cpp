@@ -13,6 +13,13 @@ namespace {
 
 constexpr int kMaxCallDepthLimit = 1000;  // deeper would risk the native stack
 
+// The typed host assignments' way out (conversion, untyped variable, error): kept out of line so
+// that their fast path needs no stack frame for a Value.
+template <typename T, typename Make>
+[[gnu::noinline]] void assign_slowly(Interpreter& run, VariableId id, T value, Make make, ChangeOverride change) {
+  run.assign(id, make(value), change);
+}
+
 }  // namespace
 
 std::shared_ptr<const Program> compile_file(const std::string& path, const CompileOptions& options) {
@@ -60,6 +67,7 @@ VariableId Interpreter::add_variable(std::string_view name) {
   Cell c;
   c.typed = false;
   s.globals.push_back(std::move(c));
+  s.host_cells.push_back(std::uint32_t(s.globals.size() - 1));
   return id;
 }
 
@@ -79,7 +87,47 @@ void Interpreter::assign(VariableId id, const Value& value, ChangeOverride chang
     if (c.typed && c.value.type != value.type) c.typed = false;
     s.assign(c, value, change, nullptr);
   }
-  if (s.trace != nullptr && s.host_assigned.size() < 10000) s.host_assigned.push_back(id);
+  s.note_host_assignment(id);
+}
+
+void Interpreter::assign_integer(VariableId id, std::int64_t value, ChangeOverride change) {
+  State& s = *state_;
+  Cell* c = s.typed_host_cell(id, Type::Integer);
+  if (!c) return assign_slowly(*this, id, value, Value::of_integer, change);
+  const bool differs = c->value.integer != value;
+  c->value.integer = value;
+  State::mark_assigned(*c, differs, change);
+  s.note_host_assignment(id);
+}
+
+void Interpreter::assign_numeric(VariableId id, double value, ChangeOverride change) {
+  State& s = *state_;
+  Cell* c = s.typed_host_cell(id, Type::Numeric);
+  if (!c) return assign_slowly(*this, id, value, Value::of_numeric, change);
+  const bool differs = c->value.numeric != value;
+  c->value.numeric = value;
+  State::mark_assigned(*c, differs, change);
+  s.note_host_assignment(id);
+}
+
+void Interpreter::assign_logical(VariableId id, bool value, ChangeOverride change) {
+  State& s = *state_;
+  Cell* c = s.typed_host_cell(id, Type::Logical);
+  if (!c) return assign_slowly(*this, id, value, Value::of_logical, change);
+  const bool differs = c->value.logical != value;
+  c->value.logical = value;
+  State::mark_assigned(*c, differs, change);
+  s.note_host_assignment(id);
+}
+
+void Interpreter::assign_string(VariableId id, std::string_view value, ChangeOverride change) {
+  State& s = *state_;
+  Cell* c = s.typed_host_cell(id, Type::String);
+  if (!c) return assign_slowly(*this, id, value, [](std::string_view v) { return Value::of_string(std::string(v)); }, change);
+  const bool differs = std::string_view(c->value.text) != value;
+  if (differs) c->value.text.assign(value);
+  State::mark_assigned(*c, differs, change);
+  s.note_host_assignment(id);
 }
 
 void Interpreter::assign_element(VariableId id, std::span<const int> indices, const Value& value, ChangeOverride change) {

@@ -35,6 +35,7 @@ Interpreter::State::State(std::shared_ptr<const Program> p, OutputSink& s)
       c.typed = v.typed;
     }
   }
+  for (const GlobalVariable& v : program.globals) host_cells.push_back(v.first_cell);
   format_sites.resize(program.format_sites + 3);
   constant_formats.resize(program.format_specs.size());
   procedure_trace_level.assign(program.procedures.size(), -1);
@@ -58,6 +59,10 @@ Cell& Interpreter::State::host_cell(VariableId id) {
   return globals[program.global_cells + extra];
 }
 
+void Interpreter::State::note_traced_assignment(VariableId id) {
+  if (host_assigned.size() < 10000) host_assigned.push_back(id);
+}
+
 const std::string& Interpreter::State::host_name(VariableId id) const {
   if (id < program.globals.size()) return program.globals[id].name;
   return extra_names.at(id - program.globals.size());
@@ -68,13 +73,7 @@ const std::string& Interpreter::State::variable_name(const VarRef& ref) const {
   return program.globals[ref.id].name;
 }
 
-Cell& Interpreter::State::cell(const VarRef& ref) {
-  if (ref.local) return stack[frames.back().base + ref.cell];
-  return globals[ref.cell];
-}
-
-Cell& Interpreter::State::element(const VarRef& ref) {
-  if (ref.indices == kNone) return cell(ref);
+Cell& Interpreter::State::array_element(const VarRef& ref) {
   const std::vector<int>& dims = ref.local ? program.procedures[frames.back().procedure].locals[ref.id].dimensions
                                            : program.globals[ref.id].dimensions;
   std::uint32_t offset = 0;
@@ -146,7 +145,7 @@ void Interpreter::State::reset_cell(Cell& c, Type type) const {
   c.typed = true;
 }
 
-void Interpreter::State::assign(Cell& target, const Value& v, ChangeOverride change, const VarRef* ref) {
+void Interpreter::State::assign_converting(Cell& target, const Value& v, ChangeOverride change, const VarRef* ref) {
   Value& cur = target.value;
   bool differs = false;
   if (!target.typed) {
@@ -187,13 +186,7 @@ void Interpreter::State::assign(Cell& target, const Value& v, ChangeOverride cha
         break;
     }
   }
-  switch (change) {
-    case ChangeOverride::Compute: target.changed = differs || !target.assigned; break;
-    case ChangeOverride::ForceChanged: target.changed = true; break;
-    case ChangeOverride::ForceUnchanged: target.changed = false; break;
-  }
-  target.assigned = true;
-  target.active = true;
+  mark_assigned(target, differs, change);
 }
 
 }  // namespace gppl

@@ -2,6 +2,7 @@
 // expression scratch stack, the output line and the trace. Internal to gppl/.
 #pragma once
 
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -27,6 +28,21 @@ struct Cell {
 
 enum class Flow : std::uint8_t { Normal, Exit, Abort };
 
+// Equality of short texts (display formats, names) with word loads instead of a memcmp call.
+inline bool same_text(std::string_view a, std::string_view b) {
+  const std::size_t n = a.size();
+  if (n != b.size()) return false;
+  if (n > 16) return a == b;
+  const char *p = a.data(), *q = b.data();
+  auto word8 = [](const char* s) { std::uint64_t w; std::memcpy(&w, s, 8); return w; };
+  auto word4 = [](const char* s) { std::uint32_t w; std::memcpy(&w, s, 4); return w; };
+  if (n >= 8) return word8(p) == word8(q) && word8(p + n - 8) == word8(q + n - 8);
+  if (n >= 4) return word4(p) == word4(q) && word4(p + n - 4) == word4(q + n - 4);
+  for (std::size_t i = 0; i < n; ++i)
+    if (p[i] != q[i]) return false;
+  return true;
+}
+
 struct FormatCache {
   std::string spec;
   std::optional<DisplayFormat> format;
@@ -42,6 +58,7 @@ struct Interpreter::State {
   std::vector<Cell> globals;  // program globals, then the host's extra variables
   std::vector<std::string> extra_names;  // variables only the host names (add_variable)
   std::unordered_map<std::string, std::uint32_t> extra_index;
+  std::vector<std::uint32_t> host_cells;  // VariableId -> its (first) cell in `globals`
   std::vector<Cell> stack;  // locals of all active procedures
   std::uint32_t stack_top = 0;
   struct Frame {
@@ -82,15 +99,64 @@ struct Interpreter::State {
 
   // host-facing variable ids: program globals, then extra variables
   Cell& host_cell(VariableId id);
+  // The host's cell of `id` when it is typed and holds a `type` (assignable without conversion).
+  Cell* typed_host_cell(VariableId id, Type type) {
+    if (id >= host_cells.size()) return nullptr;
+    Cell& c = globals[host_cells[id]];
+    return c.typed && c.value.type == type ? &c : nullptr;
+  }
+  void note_host_assignment(VariableId id) {  // for the trace's dump of what the host set
+    if (trace != nullptr) note_traced_assignment(id);
+  }
+  void note_traced_assignment(VariableId id);
   const std::string& host_name(VariableId id) const;
 
   // machine.cpp: cells, conversions, assignment
   [[noreturn]] void fail(ErrorCode code, std::string_view name = {}, std::string_view detail = {}) const;
   [[noreturn]] void fail_at(SourcePos pos, ErrorCode code, std::string_view name = {}, std::string_view detail = {}) const;
-  Cell& cell(const VarRef& ref);
-  Cell& element(const VarRef& ref);
+  // Scalars inline (every variable read of a procedure); arrays evaluate their indices out of line.
+  Cell& cell(const VarRef& ref) { return ref.local ? stack[frames.back().base + ref.cell] : globals[ref.cell]; }
+  Cell& element(const VarRef& ref) { return ref.indices == kNone ? cell(ref) : array_element(ref); }
+  Cell& array_element(const VarRef& ref);
+  // The value of a Constant or scalar Variable node without copying it; nullptr for other nodes.
+  const Value* operand(const Node& n) {
+    if (n.kind == NodeKind::Constant) return &program.constants[n.a];
+    if (n.kind == NodeKind::Variable && n.simple) return &cell(program.refs[n.a]).value;
+    return nullptr;
+  }
   const std::string& variable_name(const VarRef& ref) const;
-  void assign(Cell& target, const Value& v, ChangeOverride change, const VarRef* ref);
+  // Assignment with the change/active rules (3.5). A number or logical of the variable's own type
+  // is stored inline; conversions, strings, untyped host variables and errors go out of line.
+  void assign(Cell& target, const Value& v, ChangeOverride change, const VarRef* ref) {
+    if (!target.typed || target.value.type != v.type || v.type == Type::String)
+      return assign_converting(target, v, change, ref);
+    bool differs = false;
+    switch (v.type) {
+      case Type::Integer: differs = target.value.integer != v.integer, target.value.integer = v.integer; break;
+      case Type::Numeric: differs = target.value.numeric != v.numeric, target.value.numeric = v.numeric; break;
+      default: differs = target.value.logical != v.logical, target.value.logical = v.logical; break;
+    }
+    mark_assigned(target, differs, change);
+  }
+  static void mark_assigned(Cell& target, bool differs, ChangeOverride change) {
+    switch (change) {
+      case ChangeOverride::Compute: target.changed = differs || !target.assigned; break;
+      case ChangeOverride::ForceChanged: target.changed = true; break;
+      case ChangeOverride::ForceUnchanged: target.changed = false; break;
+    }
+    target.assigned = true;
+    target.active = true;
+  }
+  void assign_converting(Cell& target, const Value& v, ChangeOverride change, const VarRef* ref);
+  // out = in, copying the text only when there is one (a std::string copy costs a call).
+  static void copy_value(Value& out, const Value& in) {
+    out.type = in.type;
+    out.integer = in.integer;
+    out.numeric = in.numeric;
+    out.logical = in.logical;
+    if (in.text.empty()) out.text.clear();
+    else out.text.assign(in.text);
+  }
   std::int64_t to_integer(const Value& v, const VarRef* ref = nullptr) const;
   double to_numeric(const Value& v, const VarRef* ref = nullptr) const;
   bool to_logical(const Value& v) const;
@@ -117,7 +183,12 @@ struct Interpreter::State {
   void generate(std::uint32_t first, std::uint32_t count);
   void render(const GenItem& item, std::string& out);
   const DisplayFormat& format_for(const GenItem& item, const Value& v);
-  const DisplayFormat& cached(FormatCache& cache, std::string_view spec, SourcePos pos);
+  // The parsed display format of `spec`, parsed again only when the text changed since last time.
+  const DisplayFormat& cached(FormatCache& cache, std::string_view spec, SourcePos pos) {
+    if (cache.format && same_text(cache.spec, spec)) return *cache.format;
+    return parse_format(cache, spec, pos);
+  }
+  const DisplayFormat& parse_format(FormatCache& cache, std::string_view spec, SourcePos pos);
   void append(std::string_view text);
   void open_line();
   void flush();

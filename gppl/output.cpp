@@ -95,8 +95,7 @@ void Interpreter::State::new_line() {
   if (!skip.value.logical) assign(skip, Value::of_logical(true), ChangeOverride::Compute, nullptr);
 }
 
-const DisplayFormat& Interpreter::State::cached(FormatCache& cache, std::string_view spec, SourcePos pos) {
-  if (cache.format && cache.spec == spec) return *cache.format;
+const DisplayFormat& Interpreter::State::parse_format(FormatCache& cache, std::string_view spec, SourcePos pos) {
   try {
     cache.format.emplace(parse_display_format(spec));
   } catch (const Error& e) {
@@ -110,7 +109,10 @@ const DisplayFormat& Interpreter::State::cached(FormatCache& cache, std::string_
 const DisplayFormat& Interpreter::State::format_for(const GenItem& item, const Value& v) {
   FormatCache& site = format_sites[item.site];
   switch (item.format_kind) {
-    case FormatKind::Constant: return cached(constant_formats[item.format], program.format_specs[item.format], item.pos);
+    case FormatKind::Constant: {  // its text never changes: parsed once
+      FormatCache& constant = constant_formats[item.format];
+      return constant.format ? *constant.format : parse_format(constant, program.format_specs[item.format], item.pos);
+    }
     case FormatKind::Dynamic: {
       Value& spec = push_scratch();
       eval(item.format, spec);
@@ -199,9 +201,24 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
       }
       case ItemKind::Text: append(program.constants[item.a].text); break;
       case ItemKind::Value: {
-        piece.clear();
-        render(item, piece);
-        append(piece);
+        if (line_open) {
+          // Straight into the line; the separator blank goes in front afterwards if the text needs one.
+          const std::size_t at = line.size();
+          try {
+            render(item, line);
+          } catch (...) {
+            line.resize(at);
+            throw;
+          }
+          if (separator_pending && line.size() > at) {
+            if (line[at] != ' ') line.insert(at, 1, ' ');
+            separator_pending = false;
+          }
+        } else {
+          piece.clear();
+          render(item, piece);
+          append(piece);
+        }
         if (clear_change && item.ref != kNone) element(program.refs[item.ref]).changed = false;
         break;
       }

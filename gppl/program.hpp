@@ -64,6 +64,7 @@ struct Node {
   NodeKind kind = NodeKind::Constant;
   BinaryOp op = BinaryOp::Add;
   bool active_attribute = false;  // Attribute: active (true) or change (false)
+  bool simple = false;            // Constant, or Variable/Attribute of a scalar: read without evaluating
   std::uint32_t a = 0;            // Constant: constant index; Variable/Attribute: ref index; unary/binary: child
   std::uint32_t b = 0;            // binary: right child
   std::uint32_t list = 0;         // Call: first argument in Program::lists

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -42,6 +45,22 @@ prp::Units job_units(const toolpath::Command* first) {
   if (!inch) return prp::Units::Metric;
   bool is_inch = inch->kind == toolpath::ValueKind::Logical ? inch->logical : inch->as_number() != 0;
   return is_inch ? prp::Units::Inch : prp::Units::Metric;
+}
+
+// Exact equality of short names with word loads instead of a memcmp call: the engine compares a
+// parameter name for every parameter of every command.
+bool same_name(std::string_view a, std::string_view b) {
+  const std::size_t n = a.size();
+  if (n != b.size()) return false;
+  if (n > 16) return a == b;
+  const char *p = a.data(), *q = b.data();
+  auto word8 = [](const char* s) { std::uint64_t w; std::memcpy(&w, s, 8); return w; };
+  auto word4 = [](const char* s) { std::uint32_t w; std::memcpy(&w, s, 4); return w; };
+  if (n >= 8) return word8(p) == word8(q) && word8(p + n - 8) == word8(q + n - 8);
+  if (n >= 4) return word4(p) == word4(q) && word4(p + n - 4) == word4(q + n - 4);
+  for (std::size_t i = 0; i < n; ++i)
+    if (p[i] != q[i]) return false;
+  return true;
 }
 
 struct TransparentHash {
@@ -217,9 +236,20 @@ private:
   // What the engine needs to know about a command name, looked up once per name. The slots of its
   // parameters are remembered by position: a command name's parameters come in the same order
   // command after command, so one string comparison usually replaces a name lookup.
+  struct Bound {  // the parameter at one position of a command name
+    std::string name;
+    Slot slot;
+    std::string enum_word;  // the last enumeration word seen here, and its code
+    std::int64_t enum_code = 0;
+  };
   struct CommandInfo {
     std::optional<gppl::ProcedureId> procedure;
-    std::vector<std::pair<std::string, Slot>> slots;  // by parameter position: name, slot
+    std::vector<Bound> slots;  // by parameter position
+    // What execute() does besides assigning, decided once per name instead of by name tests.
+    bool start_of_file = false;
+    bool starts_body = false;
+    bool calls_subroutine = false;
+    bool drill = false;
   };
 
   template <class F>
@@ -267,48 +297,46 @@ private:
     return slots_.emplace(std::string(name), s).first->second;
   }
 
+  // A PRP value as a post value (start-up only; commands go through assign() below).
   gppl::Value convert(const toolpath::Value& v, bool to_string) {
-    gppl::Value out;
-    convert_into(out, v, to_string);
-    return out;
-  }
-
-  // Converts into `out`, reusing its string buffer (called for every parameter of every command).
-  static void clear(gppl::Value& v) {
-    v.integer = 0;
-    v.numeric = 0.0;
-    v.logical = false;
-    v.text.clear();  // keeps its capacity
-  }
-
-  // The same value as convert(), every other field zeroed as gppl::Value's factories leave it.
-  void convert_into(gppl::Value& out, const toolpath::Value& v, bool to_string) {
-    clear(out);
     switch (v.kind) {
-      case toolpath::ValueKind::Integer: out.type = gppl::Type::Integer, out.integer = v.integer; return;
-      case toolpath::ValueKind::Numeric: out.type = gppl::Type::Numeric, out.numeric = v.numeric; return;
-      case toolpath::ValueKind::Logical: out.type = gppl::Type::Logical, out.logical = v.logical; return;
-      case toolpath::ValueKind::String: out.type = gppl::Type::String, out.text.assign(v.text); return;
+      case toolpath::ValueKind::Integer: return gppl::Value::of_integer(v.integer);
+      case toolpath::ValueKind::Numeric: return gppl::Value::of_numeric(v.numeric);
+      case toolpath::ValueKind::Logical: return gppl::Value::of_logical(v.logical);
+      case toolpath::ValueKind::String: break;
       case toolpath::ValueKind::Enum:
-        if (to_string) out.type = gppl::Type::String, out.text.assign(v.text);
-        else out.type = gppl::Type::Integer, out.integer = enums_.code(v.text);
-        return;
+        if (!to_string) return gppl::Value::of_integer(enums_.code(v.text));
+        break;
     }
+    return gppl::Value::of_string(v.text);
   }
 
+  // The command names seen last come first (a job alternates a few names: @line, @arc, ...).
   CommandInfo& info(std::string_view name) {
+    for (auto& [seen, found] : recent_)
+      if (found && same_name(seen, name)) return *found;
     auto it = commands_.find(name);
-    if (it == commands_.end()) it = commands_.emplace(std::string(name), CommandInfo{interpreter_.find_procedure(name), {}}).first;
+    if (it == commands_.end()) {
+      toolpath::Command probe;
+      probe.name = std::string(name);
+      CommandInfo made{interpreter_.find_procedure(name), {}};
+      made.start_of_file = iequals(name, "@start_of_file");
+      made.starts_body = ProgramStructure::starts_body(probe);
+      made.calls_subroutine = ProgramStructure::calls_subroutine(probe);
+      made.drill = iequals(name, "@drill");
+      it = commands_.emplace(std::string(name), std::move(made)).first;
+    }
+    std::move_backward(recent_.begin(), recent_.end() - 1, recent_.end());
+    recent_.front() = {it->first, &it->second};
     return it->second;
   }
 
-  // The slot of parameter number `position` of a command, remembered per command name.
-  const Slot& slot_at(CommandInfo& info, std::size_t position, std::string_view name) {
-    if (position < info.slots.size() && info.slots[position].first == name) return info.slots[position].second;
-    const Slot& s = slot(name);
+  // The binding of parameter number `position` of a command, remembered per command name.
+  Bound& bound_at(CommandInfo& info, std::size_t position, std::string_view name) {
+    if (position < info.slots.size() && same_name(info.slots[position].name, name)) return info.slots[position];
     if (position >= info.slots.size()) info.slots.resize(position + 1);
-    info.slots[position] = {std::string(name), s};
-    return s;
+    info.slots[position] = Bound{std::string(name), slot(name), {}, 0};
+    return info.slots[position];
   }
 
   static gppl::ChangeOverride change_override(toolpath::ChangeFlag flag) {
@@ -321,42 +349,55 @@ private:
   }
 
   void set_string(const std::optional<gppl::VariableId>& id, std::string_view text) {
-    if (!id) return;
-    clear(scratch_);
-    scratch_.type = gppl::Type::String;
-    scratch_.text.assign(text);
-    interpreter_.assign(*id, scratch_);
+    if (id) interpreter_.assign_string(*id, text);
+  }
+
+  // A parameter into its post variable, converted as convert() would, without building a Value.
+  void assign(Bound& b, const toolpath::Value& v) {
+    const gppl::VariableId id = *b.slot.id;
+    const gppl::ChangeOverride change = change_override(v.flag);
+    switch (v.kind) {
+      case toolpath::ValueKind::Integer: return interpreter_.assign_integer(id, v.integer, change);
+      case toolpath::ValueKind::Numeric: return interpreter_.assign_numeric(id, v.numeric, change);
+      case toolpath::ValueKind::Logical: return interpreter_.assign_logical(id, v.logical, change);
+      case toolpath::ValueKind::String: return interpreter_.assign_string(id, v.text, change);
+      case toolpath::ValueKind::Enum:
+        if (b.slot.is_string) return interpreter_.assign_string(id, v.text, change);
+        if (b.enum_word.empty() || !iequals(b.enum_word, v.text)) {  // words are looked up without case
+          b.enum_code = enums_.code(v.text);
+          b.enum_word = v.text;
+        }
+        return interpreter_.assign_integer(id, b.enum_code, change);
+    }
   }
 
   // Optional parameters a command did not supply are inactive (gppl-language.md 1.2).
-  void deactivate_missing(const toolpath::Command& command) {
+  void deactivate_missing(const toolpath::Command& command, const CommandInfo& info) {
     auto deactivate = [&](std::string_view name) {
       if (command.find(name)) return;
       if (const Slot& s = slot(name); s.id) interpreter_.set_active(*s.id, false);
     };
-    if (iequals(command.name, "@call_proc") || iequals(command.name, "@call_prms")) {
+    if (info.calls_subroutine) {
       for (std::string_view name : {"message", "parm1", "parm2", "parm3"}) deactivate(name);
-    } else if (iequals(command.name, "@drill")) {
+    } else if (info.drill) {
       for (const auto& name : drill_parameters_) deactivate(name);
     }
   }
 
   void execute(toolpath::Command& command, std::string_view previous, std::string_view next, RunSummary& summary) {
+    CommandInfo& command_info = info(command.name);
     structure_.before(command);
-    if (iequals(command.name, "@start_of_file")) start_of_file(command);
+    if (command_info.start_of_file) start_of_file(command);
     if (options_.posted) options_.posted(command);
     bool reset = engine_.options().reset_modal_memory_at_subroutines;
-    if (reset && ProgramStructure::starts_body(command)) interpreter_.reset_change_memory();
+    if (reset && command_info.starts_body) interpreter_.reset_change_memory();
 
-    CommandInfo& command_info = info(command.name);
     for (std::size_t i = 0; i < command.parameters.size(); ++i) {
       const toolpath::Parameter& p = command.parameters[i];
-      const Slot& s = slot_at(command_info, i, p.name);
-      if (!s.id) continue;
-      convert_into(scratch_, p.value, s.is_string);
-      interpreter_.assign(*s.id, scratch_, change_override(p.value.flag));
+      Bound& b = bound_at(command_info, i, p.name);
+      if (b.slot.id) assign(b, p.value);
     }
-    deactivate_missing(command);
+    deactivate_missing(command, command_info);
     set_string(prev_command_, previous);
     set_string(current_command_, command.name);
     set_string(next_command_, next);
@@ -368,7 +409,7 @@ private:
     } else if (interpreter_.call(*command_info.procedure) == gppl::RunResult::Abort) {
       throw std::runtime_error("the post stopped the run (`abort` in " + command.name + ")");
     }
-    if (reset && ProgramStructure::calls_subroutine(command)) interpreter_.reset_change_memory();
+    if (reset && command_info.calls_subroutine) interpreter_.reset_change_memory();
   }
 
   // Names the main file, and completes the subroutine numbers the stream left out.
@@ -418,7 +459,7 @@ private:
   std::vector<std::string> drill_parameters_;
   std::unordered_map<std::string, Slot, TransparentHash, std::equal_to<>> slots_;
   std::unordered_map<std::string, CommandInfo, TransparentHash, std::equal_to<>> commands_;
-  gppl::Value scratch_;  // the value being assigned, reused so that assigning allocates nothing
+  std::array<std::pair<std::string_view, CommandInfo*>, 4> recent_{};  // names point into commands_
 };
 
 }  // namespace

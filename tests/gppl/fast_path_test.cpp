@@ -1,0 +1,199 @@
+// The interpreter's fast paths give exactly what the general paths give: tests that read their
+// operands in place (`if x gt 5`, `if flag`, `if change(x)`), assignments of a constant or a scalar,
+// and the host's typed assignments (assign_numeric, ...) against assign() with a Value.
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "support.hpp"
+
+using namespace gppl_test;
+
+namespace {
+
+const char* const kRelations[] = {"eq", "ne", "lt", "le", "gt", "ge"};
+
+struct OperandPair {
+  gppl::Value a, b;
+};
+
+class FastRelation : public testing::TestWithParam<OperandPair> {};
+
+// `if a OP b` (operands read in place) against `e = a OP b` (evaluated by the general path), for
+// two variables and for a variable against a constant of the other's type.
+TEST_P(FastRelation, AgreesWithEvaluatedRelation) {
+  const OperandPair& p = GetParam();
+  for (const char* op : kRelations) {
+    std::string source = "@t\n  r = FALSE\n  if a " + std::string(op) + " b\n    r = TRUE\n  endif\n  e = a " + op +
+                         " b\n  e2 = (a + 0) " + op + " b\nendp\n";
+    Post post(source);
+    post.set("a", p.a);
+    post.set("b", p.b);
+    post.call("@t");
+    EXPECT_EQ(post.get("r"), post.get("e")) << source;
+    EXPECT_EQ(post.get("r"), post.get("e2")) << source;
+  }
+}
+
+// Expected truth of `a OP b` for the pairs below, written out: eq ne lt le gt ge.
+struct ConstantCase {
+  const char* test;
+  gppl::Value a;
+  bool truth[6];
+};
+
+class FastConstantRelation : public testing::TestWithParam<ConstantCase> {};
+
+TEST_P(FastConstantRelation, ExactResults) {
+  const ConstantCase& c = GetParam();
+  for (int i = 0; i < 6; ++i) {
+    std::string expression = c.test;
+    expression.replace(expression.find("OP"), 2, kRelations[i]);
+    Post post("@t\n  r = FALSE\n  if " + expression + "\n    r = TRUE\n  endif\nendp\n");
+    post.set("a", c.a);
+    post.call("@t");
+    EXPECT_EQ(post.get("r"), logical(c.truth[i])) << expression;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Pairs, FastRelation,
+    testing::Values(OperandPair{integer(3), integer(3)}, OperandPair{integer(3), integer(4)},
+                    OperandPair{integer(4), integer(-3)}, OperandPair{integer(3), numeric(3.0)},
+                    OperandPair{integer(3), numeric(3.5)}, OperandPair{numeric(2.5), integer(2)},
+                    OperandPair{numeric(-0.0), numeric(0.0)}, OperandPair{numeric(1e-12), numeric(0.0)},
+                    OperandPair{logical(true), integer(1)}, OperandPair{logical(false), numeric(0.0)},
+                    OperandPair{logical(true), logical(false)}, OperandPair{numeric(0.5), logical(true)},
+                    OperandPair{string("abc"), string("abd")}, OperandPair{string("b"), string("b")}));
+
+INSTANTIATE_TEST_SUITE_P(
+    Constants, FastConstantRelation,
+    testing::Values(ConstantCase{"a OP 99990", integer(99990), {true, false, false, true, false, true}},
+                    ConstantCase{"a OP 99990", integer(99991), {false, true, false, false, true, true}},
+                    ConstantCase{"a OP 360", numeric(359.9999), {false, true, true, true, false, false}},
+                    ConstantCase{"a OP 180.0", integer(180), {true, false, false, true, false, true}},
+                    ConstantCase{"a OP TRUE", logical(true), {true, false, false, true, false, true}},
+                    ConstantCase{"a OP TRUE", integer(0), {false, true, true, true, false, false}},
+                    ConstantCase{"2.5 OP a", integer(2), {false, true, false, false, true, true}},
+                    ConstantCase{"'x' OP a", string("y"), {false, true, true, true, false, false}}));
+
+TEST(FastCondition, PlainLogicalVariable) {
+  const std::string source = "@t\n  r = 0\n  if flag\n    r = 1\n  endif\nendp\n";
+  for (const auto& [value, expected] :
+       std::vector<std::pair<gppl::Value, std::int64_t>>{{logical(true), 1}, {logical(false), 0}, {integer(1), 1},
+                                                        {integer(0), 0}, {numeric(1.0), 1}, {numeric(0.0), 0}}) {
+    Post post(source);
+    post.set("flag", value);
+    post.call("@t");
+    EXPECT_EQ(post.get("r"), integer(expected));
+  }
+  // Not 0 or 1: the same error as an evaluated condition, at the IF.
+  const std::string fast = run_error("@t\n  global integer g\n  g = 2\n  if g\n  endif\nendp\n");
+  EXPECT_EQ(fast, run_error("@t\n  global integer g\n  g = 2\n  if (g + 0)\n  endif\nendp\n"));
+  EXPECT_NE(fast.find("4:") == 0 ? fast.find("error 420") : std::string::npos, std::string::npos) << fast;
+  EXPECT_EQ(run_error("@t\n  global string s\n  if s\n  endif\nendp\n"),
+            run_error("@t\n  global string s\n  if s + ''\n  endif\nendp\n"));
+}
+
+TEST(FastCondition, Attributes) {
+  Post post(
+      "@t\n  global integer g\n  g = 1\n  c1 = change(g)\n  if change(g)\n    r1 = 1\n  endif\n  g = 1\n"
+      "  if change(g)\n    r2 = 1\n  endif\n  active(g) = FALSE\n  if active(g)\n    r3 = 1\n  endif\n"
+      "  if not active(g)\n    r4 = 1\n  endif\nendp\n");
+  post.set("r1", integer(0));
+  post.set("r2", integer(0));
+  post.set("r3", integer(0));
+  post.set("r4", integer(0));
+  post.call("@t");
+  EXPECT_EQ(post.get("c1"), logical(true));
+  EXPECT_EQ(post.get("r1"), integer(1));
+  EXPECT_EQ(post.get("r2"), integer(0));
+  EXPECT_EQ(post.get("r3"), integer(0));
+  EXPECT_EQ(post.get("r4"), integer(1));
+}
+
+// Assigning a constant or a plain variable (no copy) follows the conversion table and the change rule.
+TEST(FastAssign, ConstantsAndScalars) {
+  Post post(
+      "@t\n  global integer i\n  global numeric n\n  global logical l\n  global string s\n"
+      "  i = 2.9999999999\n  n = 3\n  l = 1\n  s = 'ab'\n  s = s\n  ci = change(i)\n  cs = change(s)\n"
+      "  n = i\n  cn = change(n)\n  n = i\n  cn2 = change(n)\n  i = l\n  t = s\nendp\n");
+  post.call("@t");
+  EXPECT_EQ(post.get("i"), integer(1));
+  EXPECT_EQ(post.get("n"), numeric(3.0));
+  EXPECT_EQ(post.get("l"), logical(true));
+  EXPECT_EQ(post.get("s"), string("ab"));
+  EXPECT_EQ(post.get("t"), string("ab"));
+  EXPECT_EQ(post.get("ci"), logical(true));
+  EXPECT_EQ(post.get("cs"), logical(false));  // s = s assigns the same text: no change
+  EXPECT_EQ(post.get("cn"), logical(false));  // 3 into 3.0: same value
+  EXPECT_EQ(post.get("cn2"), logical(false));
+  EXPECT_EQ(run_error("@t\n  global integer i\n  global string s\n  i = s\nendp\n"),
+            run_error("@t\n  global integer i\n  global string s\n  i = s + ''\nendp\n"));
+  EXPECT_EQ(run_error("@t\n  global integer i\n  i = 1.0E10\nendp\n"),
+            run_error("@t\n  global integer i\n  i = 1.0E10 + 0\nendp\n"));
+  EXPECT_NE(run_error("@t\n  global integer i\n  i = 1.0E10\nendp\n").find("error 410"), std::string::npos);
+}
+
+// The host's typed assignments against assign() with a Value: same value, change and active, and
+// the same errors, whatever the variable's type (declared, implicit, untyped, added by the host).
+struct HostStep {
+  gppl::Value value;
+  gppl::ChangeOverride change;
+};
+
+std::string describe(const gppl::Interpreter& run, gppl::VariableId id) {
+  const gppl::Value& v = run.value(id);
+  return std::to_string(int(v.type)) + "/" + std::to_string(v.integer) + "/" + std::to_string(v.numeric) + "/" +
+         std::to_string(v.logical) + "/" + v.text + " changed=" + std::to_string(run.changed(id)) +
+         " active=" + std::to_string(run.active(id));
+}
+
+void typed_assign(gppl::Interpreter& run, gppl::VariableId id, const gppl::Value& v, gppl::ChangeOverride change) {
+  switch (v.type) {
+    case gppl::Type::Integer: return run.assign_integer(id, v.integer, change);
+    case gppl::Type::Numeric: return run.assign_numeric(id, v.numeric, change);
+    case gppl::Type::Logical: return run.assign_logical(id, v.logical, change);
+    case gppl::Type::String: return run.assign_string(id, v.text, change);
+  }
+}
+
+TEST(FastHostAssign, SameAsValueAssignment) {
+  const std::string source =
+      "@init_post\n  global integer gi\n  global numeric gn\n  global logical gl\n  global string gs\nendp\n"
+      "@t\n  x = implicit\nendp\n";
+  const std::vector<HostStep> steps = {
+      {numeric(1.5), gppl::ChangeOverride::Compute},        {numeric(1.5), gppl::ChangeOverride::Compute},
+      {numeric(1.5), gppl::ChangeOverride::ForceChanged},   {numeric(2.5), gppl::ChangeOverride::ForceUnchanged},
+      {integer(3), gppl::ChangeOverride::Compute},          {integer(3), gppl::ChangeOverride::Compute},
+      {logical(true), gppl::ChangeOverride::Compute},       {logical(true), gppl::ChangeOverride::Compute},
+      {integer(1), gppl::ChangeOverride::Compute},          {numeric(0.0), gppl::ChangeOverride::Compute},
+      {string("CCW"), gppl::ChangeOverride::Compute},       {string("CCW"), gppl::ChangeOverride::Compute},
+      {string("a longer text than fits in place"), gppl::ChangeOverride::Compute},
+      {numeric(2.0), gppl::ChangeOverride::Compute},        {numeric(1e12), gppl::ChangeOverride::Compute},
+      {integer(7), gppl::ChangeOverride::ForceChanged}};
+  for (const char* variable : {"gi", "gn", "gl", "gs", "implicit", "added_by_host"}) {
+    Post by_value(source), typed(source);
+    by_value.run->start();
+    typed.run->start();
+    const gppl::VariableId a = by_value.run->add_variable(variable), b = typed.run->add_variable(variable);
+    ASSERT_EQ(a, b);
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      std::string error_a, error_b;
+      try {
+        by_value.run->assign(a, steps[i].value, steps[i].change);
+      } catch (const gppl::Error& e) {
+        error_a = std::to_string(e.number()) + " " + e.text();
+      }
+      try {
+        typed_assign(*typed.run, b, steps[i].value, steps[i].change);
+      } catch (const gppl::Error& e) {
+        error_b = std::to_string(e.number()) + " " + e.text();
+      }
+      EXPECT_EQ(error_a, error_b) << variable << " step " << i;
+      EXPECT_EQ(describe(*by_value.run, a), describe(*typed.run, b)) << variable << " step " << i;
+    }
+  }
+}
+
+}  // namespace
