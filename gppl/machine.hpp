@@ -189,12 +189,24 @@ struct Interpreter::State {
     return parse_format(cache, spec, pos);
   }
   const DisplayFormat& parse_format(FormatCache& cache, std::string_view spec, SourcePos pos);
-  void append(std::string_view text);
+  // Text onto the output line; the usual case (an open line, no separator owed) inline.
+  void append(std::string_view text) {
+    if (line_open && !separator_pending) line.append(text.data(), text.size());
+    else append_opening(text);
+  }
+  void append_opening(std::string_view text);
   void open_line();
   void flush();
   void new_block(SourcePos pos);
   void new_line();
-  bool group_required(const GenItem& group);
+  // A modal group prints when one of its variables is active and changed (6.5).
+  bool group_required(const GenItem& group) {
+    for (std::uint32_t i = 0; i < group.required_count; ++i) {
+      const Cell& c = element(program.refs[program.lists[group.required + i]]);
+      if (c.active && c.changed) return true;
+    }
+    return false;
+  }
   void render_line_function(const GenItem& item, std::string& out);  // line_functions.cpp
 
   // trace.cpp

@@ -34,7 +34,7 @@ void Interpreter::State::open_line() {
   origin.source_line = current ? int(current->pos.line) : 0;
 }
 
-void Interpreter::State::append(std::string_view text) {
+void Interpreter::State::append_opening(std::string_view text) {
   if (!line_open) open_line();
   if (separator_pending && !text.empty()) {
     if (text.front() != ' ') line += ' ';
@@ -49,7 +49,8 @@ void Interpreter::State::flush() {
   separator_pending = false;
   if (!is_directive(line)) {
     if (globals[program.slots.remove_blanks].value.logical) line.erase(std::remove(line.begin(), line.end(), ' '), line.end());
-    line += globals[program.slots.end_block_text].value.text;
+    const std::string& end = globals[program.slots.end_block_text].value.text;
+    if (!end.empty()) line += end;
   }
   sink.write_line(line, origin);
   if (trace != nullptr) trace_output(line);
@@ -74,7 +75,11 @@ void Interpreter::State::new_block(SourcePos pos) {
   const DisplayFormat& f = cached(format_sites[program.format_sites + 2],
                                   spec.empty() ? std::string_view(globals[program.slots.integer_def_f].value.text) : spec, pos);
   Value& v = push_scratch();
-  v = Value::of_integer(n);
+  v.type = Type::Integer;
+  v.integer = n;
+  v.numeric = 0.0;
+  v.logical = false;
+  v.text.clear();
   try {
     append_formatted(line, f, v);
   } catch (const Error& e) {
@@ -167,14 +172,6 @@ void Interpreter::State::render(const GenItem& item, std::string& out) {
     }
   }
   if (pushed) pop_scratch();
-}
-
-bool Interpreter::State::group_required(const GenItem& group) {
-  for (std::uint32_t i = 0; i < group.required_count; ++i) {
-    const Cell& c = element(program.refs[program.lists[group.required + i]]);
-    if (c.active && c.changed) return true;
-  }
-  return false;
 }
 
 void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {

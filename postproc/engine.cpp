@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "gppl/gppl.hpp"
 #include "postproc/directive.hpp"
@@ -74,8 +75,9 @@ public:
   Sink(OutputFiles& files, LineObserver* observer) : files_(files), observer_(observer) {}
 
   void write_line(std::string_view line, const gppl::LineOrigin& origin) override {
-    std::size_t first = line.find_first_not_of(" \t");
-    bool maybe_directive = first != std::string_view::npos && line[first] == '!';
+    std::size_t first = 0;  // a directive may be indented (find_first_not_of costs a memchr per character)
+    while (first < line.size() && (line[first] == ' ' || line[first] == '\t')) ++first;
+    bool maybe_directive = first < line.size() && line[first] == '!';
     std::optional<Directive> directive = maybe_directive ? parse_directive(line) : std::nullopt;
     if (observer_) {
       // The line was started by the command that flushed the line before it (nb and nl flush the
@@ -207,15 +209,24 @@ public:
     toolpath::PrefetchSource read_ahead(first);
     auto filtered = prp::build_filter_chain(*machine_, read_ahead);
     toolpath::PrefetchSource prefetched(*filtered);
-    toolpath::LookaheadSource lookahead(prefetched);
-    toolpath::Command command;
-    std::string previous;
-    while (lookahead.next(command)) {
+    // Three commands in rotation: the one before (its name is prev_command), the current one and
+    // the one after it (next_command, read before the current one runs): no name is copied.
+    std::array<toolpath::Command, 3> rotation;
+    toolpath::Command* previous = nullptr;
+    toolpath::Command* current = &rotation[0];
+    toolpath::Command* following = &rotation[1];
+    toolpath::Command* spare = &rotation[2];
+    for (bool more = prefetched.next(*current); more;) {
       ++summary.commands;
-      sink_.begin_command(command.index, command.name);
-      const toolpath::Command* next = lookahead.peek();
-      guarded([&] { execute(command, previous, next ? std::string_view(next->name) : std::string_view{}, summary); });
-      previous = command.name;
+      sink_.begin_command(current->index, current->name);
+      more = prefetched.next(*following);
+      guarded([&] {
+        execute(*current, previous ? std::string_view(previous->name) : std::string_view{},
+                more ? std::string_view(following->name) : std::string_view{}, summary);
+      });
+      toolpath::Command* reused = previous ? previous : spare;
+      previous = std::exchange(current, following);
+      following = reused;
       if (options_.progress && (summary.commands & 4095) == 0) options_.progress(summary.commands);
     }
     sink_.end_commands();
