@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -19,33 +20,28 @@ namespace {
 enum ArcField { kX, kY, kZ, kApos, kBpos, kXcenter, kYcenter, kXrel, kYrel, kZstart, kSize, kPlane, kDirection,
                 kPlaneM, kFieldCount };
 
-int arc_field(std::string_view n) {
-  auto named = [&](std::string_view name) { return toolpath::iequals(n, name); };
-  switch (n.size()) {
-    case 4:
-      if (!toolpath::iequals(n.substr(1), "pos")) return -1;
-      switch (toolpath::ascii_lower(n[0])) {
-        case 'x': return kX;
-        case 'y': return kY;
-        case 'z': return kZ;
-        case 'a': return kApos;
-        case 'b': return kBpos;
-        default: return -1;
-      }
-    case 6: return named("zstart") ? kZstart : -1;
-    case 7: return named("xcenter") ? kXcenter : named("ycenter") ? kYcenter : -1;
-    case 8: return named("arc_size") ? kSize : -1;
-    case 9: return named("arc_plane") ? kPlane : -1;
-    case 11: return named("xcenter_rel") ? kXrel : named("ycenter_rel") ? kYrel : named("arc_plane_m") ? kPlaneM : -1;
-    case 13: return named("arc_direction") ? kDirection : -1;
-    default: return -1;
-  }
-}
+using toolpath::ParamKey;
+
+// Per key: the ArcField it is, or -1.
+constexpr auto kArcFields = [] {
+  KeyTable<std::int8_t> t{};
+  t.fill(-1);
+  const std::pair<ParamKey, ArcField> fields[] = {
+      {ParamKey::xpos, kX},          {ParamKey::ypos, kY},
+      {ParamKey::zpos, kZ},          {ParamKey::apos, kApos},
+      {ParamKey::bpos, kBpos},       {ParamKey::xcenter, kXcenter},
+      {ParamKey::ycenter, kYcenter}, {ParamKey::xcenter_rel, kXrel},
+      {ParamKey::ycenter_rel, kYrel}, {ParamKey::zstart, kZstart},
+      {ParamKey::arc_size, kSize},   {ParamKey::arc_plane, kPlane},
+      {ParamKey::arc_direction, kDirection}, {ParamKey::arc_plane_m, kPlaneM}};
+  for (auto [key, field] : fields) at(t, key) = static_cast<std::int8_t>(field);
+  return t;
+}();
 
 struct ArcFields {
   explicit ArcFields(const toolpath::Command& c) {
     for (const toolpath::Parameter& p : c.parameters)
-      if (const int f = arc_field(p.name); f >= 0 && !values[f]) values[f] = &p.value;
+      if (const int f = at(kArcFields, p.key); f >= 0 && !values[f]) values[f] = &p.value;
   }
   const toolpath::Value* find(ArcField f) const { return values[f]; }
   // As prp::number().
@@ -117,10 +113,8 @@ void ArcFilter::track(const toolpath::Command& out, CommandKind kind) {
   // apos and bpos: the first of each name counts, as with number(); one pass for both.
   bool seen[2] = {false, false};
   for (const toolpath::Parameter& p : out.parameters) {
-    if (p.name.size() != 4 || !toolpath::iequals(std::string_view(p.name).substr(1), "pos")) continue;
-    const char axis = toolpath::ascii_lower(p.name[0]);
-    if (axis != 'a' && axis != 'b') continue;
-    const int i = axis - 'a';
+    if (p.key != ParamKey::apos && p.key != ParamKey::bpos) continue;
+    const int i = p.key == ParamKey::apos ? 0 : 1;
     if (seen[i]) continue;
     seen[i] = true;
     const toolpath::Value& v = p.value;
@@ -223,24 +217,24 @@ void ArcFilter::emit(toolpath::Command& out) {
   const Arc piece = arc_.piece(chords_ > 0 ? arc_.sweep * i / chords_ : cuts_[static_cast<std::size_t>(i)], to);
   const bool as_line = chords_ > 0 || piece.sweep < settings_.eps_angle || piece.length() < settings_.min_length;
   if (as_line) {
-    make_motion(out, five_axis_ ? "@line_5x" : "@line", original_, piece.end, number(original_, "feed"));
+    make_motion(out, five_axis_ ? "@line_5x" : "@line", original_, piece.end, number(original_, ParamKey::feed));
     sets_.write_vertex(out, piece.end, last);
   } else {
     out = original_;
     out.trace.clear();
     const auto a = toolpath::geometry::axes(piece.plane);
     set_point(out, piece.end);
-    set_number(out, "xcenter_rel", piece.centre[a.first] - piece.start[a.first]);
-    set_number(out, "ycenter_rel", piece.centre[a.second] - piece.start[a.second]);
-    set_number(out, "start_angle", piece.start_angle());
-    set_number(out, "end_angle", piece.end_angle());
-    set_number(out, "arc_size", piece.sweep);
-    if (out.find("zstart")) set_number(out, "zstart", piece.start.z());
+    set_number(out, ParamKey::xcenter_rel, piece.centre[a.first] - piece.start[a.first]);
+    set_number(out, ParamKey::ycenter_rel, piece.centre[a.second] - piece.start[a.second]);
+    set_number(out, ParamKey::start_angle, piece.start_angle());
+    set_number(out, ParamKey::end_angle, piece.end_angle());
+    set_number(out, ParamKey::arc_size, piece.sweep);
+    if (out.find(ParamKey::zstart)) set_number(out, ParamKey::zstart, piece.start.z());
     sets_.write_piece(out, piece, i == 0, last);
   }
   if (five_axis_) {
     // The rotary axes turn in step with the arc angle, from where the previous command left them.
-    static constexpr std::string_view names[] = {"apos", "bpos"};
+    static constexpr ParamKey names[] = {ParamKey::apos, ParamKey::bpos};
     for (int k = 0; k < 2; ++k) {
       const auto& from = rotary_from_[k];
       const auto& end = rotary_to_[k];

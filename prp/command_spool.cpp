@@ -10,7 +10,8 @@ namespace {
 
 // Record layout: a u32 payload length, then the payload: name, index, depth, the parameters (name,
 // kind and flag in one byte, then only the field of that kind), the trace lines. Texts are a u32
-// length and the bytes.
+// length and the bytes. A parameter name is a u16: its ParamKey when the name is spelled exactly as
+// the catalogue spells it (no hashing when it is read back), else 0 and the name as text.
 constexpr std::size_t kBlock = std::size_t{1} << 20;
 
 // Writes into a buffer already large enough (see bound()).
@@ -36,7 +37,7 @@ private:
 // The largest record a command can make.
 std::size_t bound(const toolpath::Command& c) {
   std::size_t n = 4 + 4 + c.name.size() + 8 + 4 + 4 + 4;
-  for (const auto& p : c.parameters) n += 4 + p.name.size() + 1 + 8 + p.value.text.size() + 4;
+  for (const auto& p : c.parameters) n += 2 + 4 + p.name.size() + 1 + 8 + p.value.text.size() + 4;
   for (const auto& t : c.trace) n += 1 + 4 + t.text.size();
   return n;
 }
@@ -96,7 +97,12 @@ std::int64_t CommandSpool::write(const toolpath::Command& c) {
   w.put(static_cast<std::int32_t>(c.depth));
   w.put(static_cast<std::uint32_t>(c.parameters.size()));
   for (const auto& p : c.parameters) {
-    w.text(p.name);
+    if (p.key != toolpath::ParamKey::none && p.name == toolpath::param_name(p.key)) {
+      w.put(static_cast<std::uint16_t>(p.key));
+    } else {
+      w.put(std::uint16_t{0});
+      w.text(p.name);
+    }
     const toolpath::Value& v = p.value;
     w.put(static_cast<std::uint8_t>(static_cast<unsigned>(v.kind) | static_cast<unsigned>(v.flag) << 4));
     switch (v.kind) {
@@ -163,7 +169,14 @@ bool CommandSpool::read(toolpath::Command& out) {
   out.depth = in.get<std::int32_t>();
   out.parameters.resize(in.get<std::uint32_t>());
   for (auto& p : out.parameters) {
-    p.rename(in.text());
+    if (const auto code = in.get<std::uint16_t>(); code != 0) {
+      if (code > toolpath::param_key_count) throw std::runtime_error("the temporary file of jobs is damaged");
+      const auto key = static_cast<toolpath::ParamKey>(code);
+      p.name.assign(toolpath::param_name(key));  // the catalogue spelling, as written
+      p.key = key;                                // already known: no rename(), no hashing
+    } else {
+      p.rename(in.text());
+    }
     toolpath::Value& v = p.value;
     const auto kind_and_flag = in.get<std::uint8_t>();
     v.kind = static_cast<toolpath::ValueKind>(kind_and_flag & 0xf);

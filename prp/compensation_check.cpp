@@ -21,8 +21,8 @@ bool CompensationCheck::next(toolpath::Command& out) {
     const toolpath::Value* side = out.find("side");
     side_ = side && !toolpath::iequals(side->text, "COMP_OFF") ? side->text : std::string();
   } else if (kind == CommandKind::arc && !side_.empty() && tool_radius_) {
-    const toolpath::Value* dir = out.find("arc_direction");
-    auto radius = number(out, "radius");
+    const toolpath::Value* dir = out.find(toolpath::ParamKey::arc_direction);
+    auto radius = number(out, toolpath::ParamKey::radius);
     // The tool runs inside the arc when it is on the side of the centre: left of a CCW arc,
     // right of a CW one.
     const bool concave = dir && toolpath::iequals(dir->text, "CCW") == toolpath::iequals(side_, "COMP_LEFT");

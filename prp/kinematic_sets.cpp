@@ -112,6 +112,28 @@ std::optional<SetCoordinate> classify_set_coordinate(std::string_view name) {
   return std::nullopt;
 }
 
+namespace {
+
+// Per key: 0 not a set coordinate, else 1 + set * 9 + role * 3 + axis. Filled once from the
+// spelled names, so the table and classify_set_coordinate(string_view) cannot disagree.
+const KeyTable<std::uint8_t> kSetCoordinates = [] {
+  KeyTable<std::uint8_t> t{};
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    const auto key = static_cast<toolpath::ParamKey>(k);
+    if (auto c = classify_set_coordinate(toolpath::param_name(key)))
+      t[k] = static_cast<std::uint8_t>(1 + c->set * 9 + static_cast<int>(c->role) * 3 + c->axis);
+  }
+  return t;
+}();
+
+}  // namespace
+
+std::optional<SetCoordinate> classify_set_coordinate(toolpath::ParamKey key) {
+  const int code = at(kSetCoordinates, key);
+  if (code == 0) return std::nullopt;
+  return SetCoordinate{(code - 1) / 9, static_cast<SetRole>((code - 1) / 3 % 3), (code - 1) % 3};
+}
+
 void SetHistory::clear() {
   for (auto& p : pairs_) p.clear();
 }
@@ -139,18 +161,18 @@ void SetHistory::observe(const toolpath::Command& c, CommandKind kind) {
   int pos_seen = 0;
   for (const auto& p : c.parameters) {
     if (p.value.kind != toolpath::ValueKind::Numeric && p.value.kind != toolpath::ValueKind::Integer) continue;
-    if (p.name.size() == 4 && ends_with_ci(p.name, "pos")) {
-      const auto axis = kAxes.find(toolpath::ascii_lower(p.name[0]));
-      if (axis != std::string_view::npos) {
-        pos[axis] = p.value.as_number();
-        pos_seen |= 1 << axis;
-      }
+    using toolpath::ParamKey;
+    if (p.key == ParamKey::xpos || p.key == ParamKey::ypos || p.key == ParamKey::zpos) {
+      const int axis = p.key == ParamKey::xpos ? 0 : p.key == ParamKey::ypos ? 1 : 2;
+      pos[static_cast<std::size_t>(axis)] = p.value.as_number();
+      pos_seen |= 1 << axis;
       continue;
     }
-    auto k = classify_set_coordinate(p.name);
-    if (!k || k->role != SetRole::End) continue;
-    end[static_cast<std::size_t>(k->set)][static_cast<std::size_t>(k->axis)] = p.value.as_number();
-    seen[static_cast<std::size_t>(k->set)] |= 1 << k->axis;
+    const int code = at(kSetCoordinates, p.key);
+    if (code == 0 || (code - 1) / 3 % 3 != static_cast<int>(SetRole::End)) continue;
+    const int set = (code - 1) / 9, axis = (code - 1) % 3;
+    end[static_cast<std::size_t>(set)][static_cast<std::size_t>(axis)] = p.value.as_number();
+    seen[static_cast<std::size_t>(set)] |= 1 << axis;
   }
   if (pos_seen != 7) return;
   for (int s = 0; s < kSetCount; ++s) {
@@ -165,7 +187,7 @@ void ArcSets::prepare(const toolpath::Command& arc, const toolpath::geometry::Ar
   std::array<std::array<Vector3d, 3>, kSetCount> points;
   std::array<int, kSetCount> seen{};
   for (const auto& p : arc.parameters) {
-    auto k = classify_set_coordinate(p.name);
+    auto k = classify_set_coordinate(p.key);
     if (!k) continue;
     points[static_cast<std::size_t>(k->set)][static_cast<std::size_t>(k->role)][k->axis] = p.value.as_number();
     seen[static_cast<std::size_t>(k->set)] |= 1 << (3 * static_cast<int>(k->role) + k->axis);

@@ -36,6 +36,8 @@ struct SetCoordinate {
 };
 // `xhpos` -> {h, End, x}; `ztocenter` -> {to, Centre, z}; anything else (xpos, xcenter_rel) -> none.
 std::optional<SetCoordinate> classify_set_coordinate(std::string_view name);
+// The same by interned key, one table load (every set coordinate is a catalogue name).
+std::optional<SetCoordinate> classify_set_coordinate(toolpath::ParamKey key);
 
 // Recent motion end points seen in pos and in each set, newest last (a few per set).
 class SetHistory {

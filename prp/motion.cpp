@@ -34,19 +34,30 @@ void set_number(toolpath::Command& c, std::string_view name, double v) {
   c.set(name, toolpath::Value::make_numeric(v, old ? old->flag : toolpath::ChangeFlag::None));
 }
 
+std::optional<double> number(const toolpath::Command& c, toolpath::ParamKey key) {
+  const toolpath::Value* v = c.find(key);
+  if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return std::nullopt;
+  return v->as_number();
+}
+
+void set_number(toolpath::Command& c, toolpath::ParamKey key, double v) {
+  const toolpath::Value* old = c.find(key);
+  c.set(key, toolpath::Value::make_numeric(v, old ? old->flag : toolpath::ChangeFlag::None));
+}
+
 void set_point(toolpath::Command& c, const Eigen::Vector3d& p) {
-  set_number(c, "xpos", p.x());
-  set_number(c, "ypos", p.y());
-  set_number(c, "zpos", p.z());
+  using toolpath::ParamKey;
+  set_number(c, ParamKey::xpos, p.x());
+  set_number(c, ParamKey::ypos, p.y());
+  set_number(c, ParamKey::zpos, p.z());
 }
 
 namespace {
 
 // xpos, ypos, zpos: 0, 1, 2; anything else -1.
-int axis_of(std::string_view name) {
-  if (name.size() != 4 || !toolpath::iequals(name.substr(1), "pos")) return -1;
-  const char a = toolpath::ascii_lower(name[0]);
-  return a >= 'x' && a <= 'z' ? a - 'x' : -1;
+int axis_of(toolpath::ParamKey key) {
+  using toolpath::ParamKey;
+  return key == ParamKey::xpos ? 0 : key == ParamKey::ypos ? 1 : key == ParamKey::zpos ? 2 : -1;
 }
 
 }  // namespace
@@ -59,7 +70,7 @@ void ToolPosition::update(const toolpath::Command& c, CommandKind kind) {
   if (!c.is_stream_command() || !has(kMovesTool, kind)) return;
   bool seen[3] = {false, false, false};
   for (const toolpath::Parameter& p : c.parameters) {
-    const int i = axis_of(p.name);
+    const int i = axis_of(p.key);
     if (i < 0 || seen[i]) continue;
     seen[i] = true;
     const toolpath::Value& v = p.value;

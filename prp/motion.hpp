@@ -22,6 +22,23 @@ bool is_motion_block(const toolpath::Command& c);
 
 std::optional<double> number(const toolpath::Command& c, std::string_view name);
 void set_number(toolpath::Command& c, std::string_view name, double v);
+// The same by interned key (one integer compare per parameter): the filters' per-command paths.
+std::optional<double> number(const toolpath::Command& c, toolpath::ParamKey key);
+void set_number(toolpath::Command& c, toolpath::ParamKey key, double v);
+
+// A table from every ParamKey (none included) to a small code, filled by the compiler: a filter
+// classifies a parameter with one load instead of comparing its name. Every name such a table
+// lists must be in the catalogue (toolpath/param_names.inc), so ParamKey::none maps to `fill`.
+template <class T>
+using KeyTable = std::array<T, toolpath::param_key_count + 1>;
+template <class T>
+constexpr const T& at(const KeyTable<T>& table, toolpath::ParamKey key) {
+  return table[static_cast<std::size_t>(key)];
+}
+template <class T>
+constexpr T& at(KeyTable<T>& table, toolpath::ParamKey key) {
+  return table[static_cast<std::size_t>(key)];
+}
 void set_point(toolpath::Command& c, const Eigen::Vector3d& p);
 
 // The tool position, axis by axis (an axis is unknown until a command sets it).

@@ -8,41 +8,25 @@
 namespace prp {
 namespace {
 
+using toolpath::ParamKey;
+
 // The parameters the filter touches: lengths (rounded with the coordinates; the first three are the
 // tool position), then the feed and the spindle speed.
-constexpr std::string_view kNames[] = {"xpos",          "ypos",          "zpos",        "xcenter",
-                                       "ycenter",       "xcenter_rel",   "ycenter_rel", "radius",
-                                       "zstart",        "drill_upper_z", "drill_lower_z", "drill_clearance_z",
-                                       "drill_depth",   "down_step",     "feed",        "spin"};
+constexpr ParamKey kKeys[] = {ParamKey::xpos,          ParamKey::ypos,          ParamKey::zpos,
+                              ParamKey::xcenter,       ParamKey::ycenter,       ParamKey::xcenter_rel,
+                              ParamKey::ycenter_rel,   ParamKey::radius,        ParamKey::zstart,
+                              ParamKey::drill_upper_z, ParamKey::drill_lower_z, ParamKey::drill_clearance_z,
+                              ParamKey::drill_depth,   ParamKey::down_step,     ParamKey::feed,
+                              ParamKey::spin};
 constexpr int kFeed = 14, kSpin = 15;
 
-// Which of kNames a parameter name is, or -1. Every parameter of every command is looked up, so a
-// name is compared only with the (at most two) candidates of its length and first letter.
-class NameIndex {
-public:
-  NameIndex() {
-    for (auto& slot : slots_) slot = {-1, -1};
-    for (int k = 0; k < static_cast<int>(std::size(kNames)); ++k) {
-      auto& slot = slots_[slot_of(kNames[k])];
-      (slot[0] < 0 ? slot[0] : slot[1]) = static_cast<std::int8_t>(k);
-    }
-  }
-  int find(std::string_view name) const {
-    if (name.empty() || name.size() > kLongest) return -1;
-    for (int k : slots_[slot_of(name)])
-      if (k >= 0 && toolpath::iequals(kNames[k], name)) return k;
-    return -1;
-  }
-
-private:
-  static constexpr std::size_t kLongest = 17;  // drill_clearance_z
-  static std::size_t slot_of(std::string_view name) {
-    return name.size() * 32 + (static_cast<unsigned char>(toolpath::ascii_lower(name[0])) & 31u);
-  }
-  std::array<std::array<std::int8_t, 2>, (kLongest + 1) * 32> slots_;  // drill_upper_z, drill_lower_z share one
-};
-
-const NameIndex kIndex;
+// Which of kKeys a parameter is, or -1: every parameter of every command is looked up.
+constexpr auto kIndex = [] {
+  KeyTable<std::int8_t> t{};
+  t.fill(-1);
+  for (int k = 0; k < static_cast<int>(std::size(kKeys)); ++k) at(t, kKeys[k]) = static_cast<std::int8_t>(k);
+  return t;
+}();
 
 double scale_of(const std::optional<int>& digits) { return digits ? std::pow(10.0, *digits) : 0.0; }
 
@@ -95,7 +79,7 @@ bool PrecisionFilter::next(toolpath::Command& out) {
   const bool snap_axes = zero > 0 && moves;
   unsigned seen = 0;  // a name given twice: only its first occurrence counts, as with Command::find
   for (toolpath::Parameter& p : out.parameters) {
-    const int k = kIndex.find(p.name);
+    const int k = at(kIndex, p.key);
     if (k < 0 || (seen & (1u << k))) continue;
     seen |= 1u << k;
     toolpath::Value& v = p.value;

@@ -11,7 +11,8 @@ bool ShortLineFilter::hand_out(toolpath::Command& out, toolpath::Command& from) 
 }
 
 bool ShortLineFilter::is_short(const toolpath::Command& line) const {
-  static constexpr std::string_view names[] = {"xpos", "ypos", "zpos"};
+  static constexpr toolpath::ParamKey names[] = {toolpath::ParamKey::xpos, toolpath::ParamKey::ypos,
+                                                 toolpath::ParamKey::zpos};
   double squared = 0;
   for (int i = 0; i < 3; ++i) {
     auto here = sent_.axis(i);

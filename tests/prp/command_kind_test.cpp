@@ -88,6 +88,24 @@ TEST(SetCoordinate, EveryNameAndNearMisses) {
     EXPECT_FALSE(classify_set_coordinate(other)) << other;
 }
 
+// The key table and the spelled classification agree on every catalogue name (and none is nothing).
+TEST(SetCoordinate, ByKeySameAsByName) {
+  EXPECT_FALSE(classify_set_coordinate(toolpath::ParamKey::none));
+  int found = 0;
+  for (std::size_t k = 1; k <= toolpath::param_key_count; ++k) {
+    const auto key = static_cast<toolpath::ParamKey>(k);
+    const auto by_name = classify_set_coordinate(toolpath::param_name(key));
+    const auto by_key = classify_set_coordinate(key);
+    ASSERT_EQ(by_key.has_value(), by_name.has_value()) << toolpath::param_name(key);
+    if (!by_key) continue;
+    ++found;
+    EXPECT_EQ(by_key->set, by_name->set) << toolpath::param_name(key);
+    EXPECT_EQ(by_key->role, by_name->role) << toolpath::param_name(key);
+    EXPECT_EQ(by_key->axis, by_name->axis) << toolpath::param_name(key);
+  }
+  EXPECT_EQ(found, kSetCount * 3 * 3);  // every set coordinate is a catalogue name
+}
+
 TEST(PrecisionRounding, SameAsStdRound) {
   const double inf = std::numeric_limits<double>::infinity();
   for (double v : {0.0, 0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 0.49999999999999994, -0.49999999999999994, 1.4999999999999998,

@@ -31,7 +31,12 @@ std::vector<Command> samples() {
   bare.index = 123456789012;
   bare.depth = 0;
   Command long_name = command(std::string(300, 'n'), {{std::string(70000, 'p').c_str(), num(1e300)}}, 8);
-  return {arc, bare, long_name, command("@line", {{"xpos", num(0.1)}, {"ypos", num(-0.0)}}, 9)};
+  // Catalogue names are stored as their key, others (and other spellings of them) as text: both
+  // come back spelled as written, with their key.
+  Command spelled = command("@line", {{"XPOS", num(2)}, {"Feed", num(3)}, {"ypos", num(4)}, {"not_in_catalogue", num(5)},
+                                      {"zpos ", num(6)}},
+                            10);
+  return {arc, bare, long_name, command("@line", {{"xpos", num(0.1)}, {"ypos", num(-0.0)}}, 9), spelled};
 }
 
 TEST(CommandSpool, ReadsBackWhatWasWritten) {
