@@ -38,6 +38,17 @@ constexpr auto kArcFields = [] {
   return t;
 }();
 
+// Per key, what track() follows: 0 nothing, 1..5 xpos ypos zpos apos bpos.
+constexpr auto kTracked = [] {
+  KeyTable<std::uint8_t> t{};
+  at(t, ParamKey::xpos) = 1;
+  at(t, ParamKey::ypos) = 2;
+  at(t, ParamKey::zpos) = 3;
+  at(t, ParamKey::apos) = 4;
+  at(t, ParamKey::bpos) = 5;
+  return t;
+}();
+
 struct ArcFields {
   explicit ArcFields(const toolpath::Command& c) {
     for (const toolpath::Parameter& p : c.parameters)
@@ -48,7 +59,7 @@ struct ArcFields {
   std::optional<double> number(ArcField f) const {
     const toolpath::Value* v = values[f];
     if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return std::nullopt;
-    return v->as_number();
+    return number_of(*v);
   }
   const toolpath::Value* values[kFieldCount] = {};
 };
@@ -106,20 +117,25 @@ bool ArcFilter::next(toolpath::Command& out) {
   return true;
 }
 
+// One pass over the parameters for the tool position (moves only, as ToolPosition::update) and
+// for apos/bpos (any stream command); the first of each name counts, as with number().
 void ArcFilter::track(const toolpath::Command& out, CommandKind kind) {
-  position_.update(out, kind);
   history_.observe(out, kind);
   if (!out.is_stream_command()) return;
-  // apos and bpos: the first of each name counts, as with number(); one pass for both.
-  bool seen[2] = {false, false};
+  const unsigned wanted = has(kMovesTool, kind) ? 0x1fu : 0x18u;  // bits: x y z a b
+  unsigned seen = 0;
   for (const toolpath::Parameter& p : out.parameters) {
-    if (p.key != ParamKey::apos && p.key != ParamKey::bpos) continue;
-    const int i = p.key == ParamKey::apos ? 0 : 1;
-    if (seen[i]) continue;
-    seen[i] = true;
-    const toolpath::Value& v = p.value;
-    if (v.kind == toolpath::ValueKind::Integer || v.kind == toolpath::ValueKind::Numeric)
-      (i == 0 ? apos_ : bpos_) = v.as_number();
+    const int code = at(kTracked, p.key);
+    if (code == 0) continue;
+    const unsigned bit = 1u << (code - 1);
+    if (!(wanted & bit) || (seen & bit)) continue;
+    seen |= bit;
+    if (is_number(p.value)) {
+      const double x = number_of(p.value);
+      if (code <= 3) position_.set_axis(code - 1, x);
+      else (code == 4 ? apos_ : bpos_) = x;
+    }
+    if (seen == wanted) break;
   }
 }
 

@@ -126,6 +126,21 @@ const KeyTable<std::uint8_t> kSetCoordinates = [] {
   return t;
 }();
 
+// What SetHistory::observe records, per key: 0 nothing, 1..3 xpos ypos zpos, else 4 + set * 3 + axis
+// for a set end point (x?pos).
+const KeyTable<std::uint8_t> kObserved = [] {
+  KeyTable<std::uint8_t> t{};
+  at(t, toolpath::ParamKey::xpos) = 1;
+  at(t, toolpath::ParamKey::ypos) = 2;
+  at(t, toolpath::ParamKey::zpos) = 3;
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    const int code = kSetCoordinates[k];
+    if (code != 0 && (code - 1) / 3 % 3 == static_cast<int>(SetRole::End))
+      t[k] = static_cast<std::uint8_t>(4 + (code - 1) / 9 * 3 + (code - 1) % 3);
+  }
+  return t;
+}();
+
 }  // namespace
 
 std::optional<SetCoordinate> classify_set_coordinate(toolpath::ParamKey key) {
@@ -159,21 +174,21 @@ void SetHistory::observe(const toolpath::Command& c, CommandKind kind) {
   std::array<int, kSetCount> seen{};
   std::array<double, 3> pos{};
   int pos_seen = 0;
+  bool any_set = false;
   for (const auto& p : c.parameters) {
-    if (p.value.kind != toolpath::ValueKind::Numeric && p.value.kind != toolpath::ValueKind::Integer) continue;
-    using toolpath::ParamKey;
-    if (p.key == ParamKey::xpos || p.key == ParamKey::ypos || p.key == ParamKey::zpos) {
-      const int axis = p.key == ParamKey::xpos ? 0 : p.key == ParamKey::ypos ? 1 : 2;
-      pos[static_cast<std::size_t>(axis)] = p.value.as_number();
-      pos_seen |= 1 << axis;
+    const int code = at(kObserved, p.key);
+    if (code == 0 || !is_number(p.value)) continue;
+    if (code <= 3) {
+      pos[static_cast<std::size_t>(code - 1)] = number_of(p.value);
+      pos_seen |= 1 << (code - 1);
       continue;
     }
-    const int code = at(kSetCoordinates, p.key);
-    if (code == 0 || (code - 1) / 3 % 3 != static_cast<int>(SetRole::End)) continue;
-    const int set = (code - 1) / 9, axis = (code - 1) % 3;
-    end[static_cast<std::size_t>(set)][static_cast<std::size_t>(axis)] = p.value.as_number();
+    const int set = (code - 4) / 3, axis = (code - 4) % 3;
+    end[static_cast<std::size_t>(set)][static_cast<std::size_t>(axis)] = number_of(p.value);
     seen[static_cast<std::size_t>(set)] |= 1 << axis;
+    any_set = true;
   }
+  if (!any_set) return;  // nothing to record (set histories change only through add())
   if (pos_seen != 7) return;
   for (int s = 0; s < kSetCount; ++s) {
     const auto& e = end[static_cast<std::size_t>(s)];

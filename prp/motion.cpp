@@ -24,8 +24,8 @@ bool is_motion_block(const toolpath::Command& c) {
 
 std::optional<double> number(const toolpath::Command& c, std::string_view name) {
   const toolpath::Value* v = c.find(name);
-  if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return std::nullopt;
-  return v->as_number();
+  if (!v || !is_number(*v)) return std::nullopt;
+  return number_of(*v);
 }
 
 void set_number(toolpath::Command& c, std::string_view name, double v) {
@@ -36,8 +36,8 @@ void set_number(toolpath::Command& c, std::string_view name, double v) {
 
 std::optional<double> number(const toolpath::Command& c, toolpath::ParamKey key) {
   const toolpath::Value* v = c.find(key);
-  if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return std::nullopt;
-  return v->as_number();
+  if (!v || !is_number(*v)) return std::nullopt;
+  return number_of(*v);
 }
 
 void set_number(toolpath::Command& c, toolpath::ParamKey key, double v) {
@@ -68,14 +68,13 @@ void ToolPosition::update(const toolpath::Command& c) { update(c, command_kind(c
 
 void ToolPosition::update(const toolpath::Command& c, CommandKind kind) {
   if (!c.is_stream_command() || !has(kMovesTool, kind)) return;
-  bool seen[3] = {false, false, false};
+  unsigned seen = 0;
   for (const toolpath::Parameter& p : c.parameters) {
     const int i = axis_of(p.key);
-    if (i < 0 || seen[i]) continue;
-    seen[i] = true;
-    const toolpath::Value& v = p.value;
-    if (v.kind == toolpath::ValueKind::Integer || v.kind == toolpath::ValueKind::Numeric)
-      axes_[static_cast<std::size_t>(i)] = v.as_number();
+    if (i < 0 || (seen & (1u << i))) continue;
+    seen |= 1u << i;
+    if (is_number(p.value)) axes_[static_cast<std::size_t>(i)] = number_of(p.value);
+    if (seen == 7) break;  // moves usually name xpos ypos zpos first
   }
 }
 

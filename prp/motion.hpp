@@ -21,6 +21,13 @@ bool is_feed_motion(const toolpath::Command& c);  // @line, @arc, @line_on, ...
 bool is_motion_block(const toolpath::Command& c);
 
 std::optional<double> number(const toolpath::Command& c, std::string_view name);
+// Value::as_number() for a value already known to be Integer or Numeric, inline.
+inline double number_of(const toolpath::Value& v) {
+  return v.kind == toolpath::ValueKind::Integer ? static_cast<double>(v.integer) : v.numeric;
+}
+inline bool is_number(const toolpath::Value& v) {
+  return v.kind == toolpath::ValueKind::Integer || v.kind == toolpath::ValueKind::Numeric;
+}
 void set_number(toolpath::Command& c, std::string_view name, double v);
 // The same by interned key (one integer compare per parameter): the filters' per-command paths.
 std::optional<double> number(const toolpath::Command& c, toolpath::ParamKey key);

@@ -83,8 +83,8 @@ bool PrecisionFilter::next(toolpath::Command& out) {
     if (k < 0 || (seen & (1u << k))) continue;
     seen |= 1u << k;
     toolpath::Value& v = p.value;
-    if (v.kind != toolpath::ValueKind::Integer && v.kind != toolpath::ValueKind::Numeric) continue;
-    double x = v.as_number();
+    if (!is_number(v)) continue;
+    double x = number_of(v);
     bool changed = false;
     auto set = [&](double r) {
       if (r != x) x = r, changed = true;
