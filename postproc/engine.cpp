@@ -18,6 +18,7 @@
 #include "postproc/parameter_table.hpp"
 #include "postproc/structure.hpp"
 #include "toolpath/prefetch.hpp"
+#include "toolpath/short_text.hpp"
 #include "toolpath/value.hpp"
 
 namespace postproc {
@@ -46,22 +47,6 @@ prp::Units job_units(const toolpath::Command* first) {
   if (!inch) return prp::Units::Metric;
   bool is_inch = inch->kind == toolpath::ValueKind::Logical ? inch->logical : inch->as_number() != 0;
   return is_inch ? prp::Units::Inch : prp::Units::Metric;
-}
-
-// Exact equality of short names with word loads instead of a memcmp call: the engine compares a
-// parameter name for every parameter of every command.
-bool same_name(std::string_view a, std::string_view b) {
-  const std::size_t n = a.size();
-  if (n != b.size()) return false;
-  if (n > 16) return a == b;
-  const char *p = a.data(), *q = b.data();
-  auto word8 = [](const char* s) { std::uint64_t w; std::memcpy(&w, s, 8); return w; };
-  auto word4 = [](const char* s) { std::uint32_t w; std::memcpy(&w, s, 4); return w; };
-  if (n >= 8) return word8(p) == word8(q) && word8(p + n - 8) == word8(q + n - 8);
-  if (n >= 4) return word4(p) == word4(q) && word4(p + n - 4) == word4(q + n - 4);
-  for (std::size_t i = 0; i < n; ++i)
-    if (p[i] != q[i]) return false;
-  return true;
 }
 
 struct TransparentHash {
@@ -325,7 +310,7 @@ private:
   // The command names seen last come first (a job alternates a few names: @line, @arc, ...).
   CommandInfo& info(std::string_view name) {
     for (auto& [seen, found] : recent_)
-      if (found && same_name(seen, name)) return *found;
+      if (found && toolpath::same_short_text(seen, name)) return *found;
     auto it = commands_.find(name);
     if (it == commands_.end()) {
       toolpath::Command probe;
@@ -344,7 +329,7 @@ private:
 
   // The binding of parameter number `position` of a command, remembered per command name.
   Bound& bound_at(CommandInfo& info, std::size_t position, std::string_view name) {
-    if (position < info.slots.size() && same_name(info.slots[position].name, name)) return info.slots[position];
+    if (position < info.slots.size() && toolpath::same_short_text(info.slots[position].name, name)) return info.slots[position];
     if (position >= info.slots.size()) info.slots.resize(position + 1);
     info.slots[position] = Bound{std::string(name), slot(name), {}, 0};
     return info.slots[position];

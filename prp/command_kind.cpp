@@ -1,10 +1,8 @@
 #include "prp/command_kind.hpp"
 
 #include <array>
-#include <bit>
-#include <cstring>
-#include <type_traits>
 
+#include "toolpath/short_text.hpp"
 #include "toolpath/value.hpp"
 
 namespace prp {
@@ -17,25 +15,6 @@ constexpr std::string_view kNames[] = {
 #undef PRP_KIND_NAME
 };
 static_assert(std::size(kNames) <= 64, "KindSet holds 64 kinds");
-
-// Up to eight bytes of `s` from `at` as a little-endian word (zero above them).
-constexpr std::uint64_t load(std::string_view s, std::size_t at, std::size_t n) {
-  const char* p = s.data() + at;
-  if (!std::is_constant_evaluated() && std::endian::native == std::endian::little && n >= 4) {
-    if (n == 8) {
-      std::uint64_t w;
-      std::memcpy(&w, p, 8);
-      return w;
-    }
-    std::uint32_t low, high;  // two overlapping halves: the bytes they share are equal
-    std::memcpy(&low, p, 4);
-    std::memcpy(&high, p + n - 4, 4);
-    return low | std::uint64_t{high} << (8 * (n - 4));
-  }
-  std::uint64_t w = 0;
-  for (std::size_t i = 0; i < n; ++i) w |= std::uint64_t{static_cast<unsigned char>(p[i])} << (8 * i);
-  return w;
-}
 
 constexpr std::size_t kBits = 8;
 constexpr std::size_t kMask = (std::size_t{1} << kBits) - 1;
@@ -50,8 +29,8 @@ struct Folded {
 
 constexpr Folded fold(std::string_view s) {
   const std::size_t n = s.size();
-  return {toolpath::detail::lower_ascii(load(s, 0, n < 8 ? n : 8)),
-          n > 8 ? toolpath::detail::lower_ascii(load(s, n - 8, 8)) : 0, n};
+  return {toolpath::detail::lower_ascii(toolpath::load_word(s, 0, n < 8 ? n : 8)),
+          n > 8 ? toolpath::detail::lower_ascii(toolpath::load_word(s, n - 8, 8)) : 0, n};
 }
 
 constexpr std::size_t slot_of(const Folded& f) {

@@ -1,10 +1,8 @@
 #include "toolpath/param_key.hpp"
 
 #include <array>
-#include <bit>
-#include <cstring>
-#include <type_traits>
 
+#include "toolpath/short_text.hpp"
 #include "toolpath/value.hpp"
 
 namespace toolpath {
@@ -24,25 +22,6 @@ constexpr std::size_t kLongest = [] {
   return n;
 }();
 
-// `n` (at most 8) bytes of `s` from `at`, as a little-endian word (zero above them).
-constexpr std::uint64_t load(std::string_view s, std::size_t at, std::size_t n) {
-  const char* p = s.data() + at;
-  if (!std::is_constant_evaluated() && std::endian::native == std::endian::little && n >= 4) {
-    if (n == 8) {
-      std::uint64_t w;
-      std::memcpy(&w, p, 8);
-      return w;
-    }
-    std::uint32_t low, high;  // two overlapping halves: the shared bytes are equal
-    std::memcpy(&low, p, 4);
-    std::memcpy(&high, p + n - 4, 4);
-    return low | std::uint64_t{high} << (8 * (n - 4));
-  }
-  std::uint64_t w = 0;
-  for (std::size_t i = 0; i < n; ++i) w |= std::uint64_t{static_cast<unsigned char>(p[i])} << (8 * i);
-  return w;
-}
-
 // Hashes the first and the last eight bytes (fewer for short names) and the length, case folded.
 // Names that share both ends and the length only cost a longer probe.
 constexpr std::size_t kTableBits = 10;
@@ -52,8 +31,8 @@ static_assert(param_key_count * 2 < kMask, "keep the table at most half full");
 constexpr std::size_t slot_of(std::string_view s) {
   const std::size_t n = s.size();
   const std::size_t head = n < 8 ? n : 8;
-  const std::uint64_t a = detail::lower_ascii(load(s, 0, head));
-  const std::uint64_t b = n > 8 ? detail::lower_ascii(load(s, n - 8, 8)) : 0;
+  const std::uint64_t a = detail::lower_ascii(load_word(s, 0, head));
+  const std::uint64_t b = n > 8 ? detail::lower_ascii(load_word(s, n - 8, 8)) : 0;
   const std::uint64_t h = ((a * 0x9E3779B97F4A7C15ull) ^ (b + n)) * 0xC2B2AE3D27D4EB4Full;
   return static_cast<std::size_t>(h >> (64 - kTableBits));
 }
