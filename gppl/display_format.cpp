@@ -196,8 +196,8 @@ char* format_number(char* p, const DisplayFormat& f, const Value& v, bool& handl
   std::uint64_t units = 0;
   bool negative = false;
   handled = false;
-  if (v.type != Type::Numeric && f.scale_count == 0) {  // integers and logicals: exact, no rounding
-    const std::int64_t i = v.type == Type::Logical ? (v.logical ? 1 : 0) : v.integer;
+  if (formats_as_integer(f, v)) {  // integers and logicals: exact, no rounding
+    const std::int64_t i = integer_of(v);
     const std::uint64_t magnitude = i < 0 ? 0 - static_cast<std::uint64_t>(i) : static_cast<std::uint64_t>(i);
     if (n <= max_fast_fraction && magnitude <= UINT64_MAX / powers_of_ten[n]) {
       handled = true;
@@ -205,11 +205,7 @@ char* format_number(char* p, const DisplayFormat& f, const Value& v, bool& handl
     }
     negative = (i < 0) != f.invert && i != 0;
   } else {
-    double x = v.type == Type::Numeric ? v.numeric
-               : v.type == Type::Logical ? (v.logical ? 1.0 : 0.0)
-                                         : static_cast<double>(v.integer);
-    for (int s = 0; s < f.scale_count; ++s) x = f.scales[s].divide ? x / f.scales[s].factor : x * f.scales[s].factor;
-    if (f.invert) x = -x;
+    const double x = scaled_number(f, v);
     handled = n <= max_fast_fraction && fast::round_to_units(std::fabs(x), n, units);
     negative = x < 0 && units != 0;  // a value that rounds to zero has no sign
   }

@@ -147,19 +147,15 @@ char* exact::format_number(char* p, const DisplayFormat& f, const Value& v, Digi
   bool zero = false;
   const int n = f.frac_digits;
 
-  if (v.type != Type::Numeric && f.scale_count == 0) {  // exact integer path
-    std::int64_t i = v.type == Type::Logical ? (v.logical ? 1 : 0) : v.integer;
+  if (formats_as_integer(f, v)) {  // exact integer path
+    std::int64_t i = integer_of(v);
     std::uint64_t magnitude = i < 0 ? 0 - static_cast<std::uint64_t>(i) : static_cast<std::uint64_t>(i);
     negative = (i < 0) != f.invert && i != 0;
     zero = i == 0;
     if (!zero) int_len = static_cast<int>(std::to_chars(int_digits, int_digits + sizeof int_digits, magnitude).ptr - int_digits);
     std::fill_n(frac, n, '0');
   } else {
-    double x = v.type == Type::Numeric ? v.numeric
-               : v.type == Type::Logical ? (v.logical ? 1.0 : 0.0)
-                                         : static_cast<double>(v.integer);
-    for (int s = 0; s < f.scale_count; ++s) x = f.scales[s].divide ? x / f.scales[s].factor : x * f.scales[s].factor;
-    if (f.invert) x = -x;
+    const double x = scaled_number(f, v);
     if (!(std::fabs(x) <= 1e100))
       throw Error(410, Position{}, fmt::format("Val: number out of range ({} is beyond 1.E100)", x));
     Decimal d = round_decimal(std::fabs(x), n, how);

@@ -8,6 +8,22 @@
 
 #include "gppl/display_format.hpp"
 
+namespace gppl {
+
+// What both printers format. An integer or logical under a format without scaling stays an exact
+// integer; anything else becomes a double with the format's scales and sign inversion applied.
+inline bool formats_as_integer(const DisplayFormat& f, const Value& v) {
+  return v.type != Type::Numeric && f.scale_count == 0;
+}
+inline std::int64_t integer_of(const Value& v) { return v.type == Type::Logical ? (v.logical ? 1 : 0) : v.integer; }
+inline double scaled_number(const DisplayFormat& f, const Value& v) {
+  double x = v.type == Type::Numeric ? v.numeric : static_cast<double>(integer_of(v));
+  for (int s = 0; s < f.scale_count; ++s) x = f.scales[s].divide ? x / f.scales[s].factor : x * f.scales[s].factor;
+  return f.invert ? -x : x;
+}
+
+}  // namespace gppl
+
 namespace gppl::exact {
 
 // Longest number part: pad up to M, sign, 101 integer digits of 1e100 (or m zeros), point, N digits.
