@@ -1,6 +1,7 @@
 #include "bench/synthetic_job.hpp"
 
 #include <cmath>
+#include <span>
 
 namespace bench {
 namespace {
@@ -9,33 +10,53 @@ using toolpath::Value;
 
 double round3(double v) { return std::round(v * 1000.0) / 1000.0; }
 
-void header(toolpath::Command& c, std::size_t step) {
-  switch (step) {
-    case 0:
+// The commands around the motions, in the order of each shape.
+enum class Frame {
+  start_of_file, def_tool, machine_plane, start_program, start_of_job, change_tool,
+  call_proc, end_program, proc, end_of_job, end_proc, end_of_file
+};
+using F = Frame;
+constexpr Frame kFlatHead[] = {F::start_of_file, F::def_tool, F::machine_plane, F::start_program, F::start_of_job,
+                               F::change_tool};
+constexpr Frame kFlatTail[] = {F::end_of_job, F::end_program, F::end_of_file};
+constexpr Frame kProcHead[] = {F::start_of_file, F::def_tool, F::machine_plane, F::start_program, F::change_tool,
+                               F::call_proc,     F::end_program, F::proc,         F::start_of_job};
+constexpr Frame kProcTail[] = {F::end_of_job, F::end_proc, F::end_of_file};
+
+// The job's own parameters, which @call_proc repeats (gpptool 2.8) with the job's tool.
+void job_parameters(toolpath::Command& c, bool with_tool) {
+  c.set("job_name", Value::make_string("F-BENCH"));
+  c.set("job_type", Value::make_string("profile"));
+  if (with_tool) c.set("tool_number", Value::make_integer(4));
+}
+
+void frame(toolpath::Command& c, Frame f, JobShape shape) {
+  const bool procedures = shape == JobShape::procedures;
+  switch (f) {
+    case F::start_of_file:
       c.name = "@start_of_file";
       c.set("program_number", Value::make_integer(1234));
       c.set("g_file_name", Value::make_string("BENCH"));
       c.set("first_proc_number", Value::make_integer(1));
       c.set("last_proc_number", Value::make_integer(1));
-      c.set("first_user_proc", Value::make_integer(1));
+      c.set("first_user_proc", Value::make_integer(procedures ? 2 : 1));
       c.set("home_number", Value::make_integer(1));
       break;
-    case 1:
+    case F::def_tool:
       c.name = "@def_tool";
       c.set("tool_number", Value::make_integer(4));
       c.set("tool_offset", Value::make_numeric(5.0));
       break;
-    case 2:
+    case F::machine_plane:
       c.name = "@machine_plane";
       c.set("machine_plane", Value::make_enum("XY"));
       break;
-    case 3: c.name = "@start_program"; break;
-    case 4:
+    case F::start_program: c.name = "@start_program"; break;
+    case F::start_of_job:
       c.name = "@start_of_job";
-      c.set("job_name", Value::make_string("F-BENCH"));
-      c.set("job_type", Value::make_string("profile"));
+      job_parameters(c, procedures);
       break;
-    default:
+    case F::change_tool:
       c.name = "@change_tool";
       c.set("tool_number", Value::make_integer(4));
       c.set("tool_diameter", Value::make_numeric(10.0));
@@ -44,10 +65,27 @@ void header(toolpath::Command& c, std::size_t step) {
       c.set("znext", Value::make_numeric(50.0));
       c.set("spin", Value::make_integer(6000));
       break;
+    case F::call_proc:
+      c.name = "@call_proc";
+      job_parameters(c, true);
+      c.set("message", Value::make_string("F-BENCH"));
+      c.set("label", Value::make_integer(1));
+      c.set("proc_count", Value::make_integer(1));
+      break;
+    case F::end_program: c.name = "@end_program"; break;
+    case F::proc:
+      c.name = "@proc";
+      c.set("label", Value::make_integer(1));
+      break;
+    case F::end_of_job: c.name = "@end_of_job"; break;
+    case F::end_proc:
+      c.name = "@end_proc";
+      c.set("label", Value::make_integer(1));
+      c.set("end_of_job", Value::make_logical(true));
+      break;
+    case F::end_of_file: c.name = "@end_of_file"; break;
   }
 }
-
-constexpr std::size_t kHeader = 6;
 
 // Motion i of a contour made of 40-mm lines joined by 5-mm quarter arcs, stepping down 0.5 mm per lap.
 void motion(toolpath::Command& c, std::size_t i) {
@@ -86,19 +124,16 @@ void motion(toolpath::Command& c, std::size_t i) {
 }  // namespace
 
 bool SyntheticJob::next(toolpath::Command& out) {
-  const std::size_t total = kHeader + motions_ + 3;
-  if (step_ >= total) return false;
+  const bool procedures = shape_ == JobShape::procedures;
+  const std::span<const Frame> head = procedures ? std::span<const Frame>(kProcHead) : std::span<const Frame>(kFlatHead);
+  const std::span<const Frame> tail = procedures ? std::span<const Frame>(kProcTail) : std::span<const Frame>(kFlatTail);
+  if (step_ >= head.size() + motions_ + tail.size()) return false;
   out.clear();
   out.depth = 1;
   out.index = index_++;
-  if (step_ < kHeader) {
-    header(out, step_);
-  } else if (step_ < kHeader + motions_) {
-    motion(out, step_ - kHeader);
-  } else {
-    static const char* const trailer[] = {"@end_of_job", "@end_program", "@end_of_file"};
-    out.name = trailer[step_ - kHeader - motions_];
-  }
+  if (step_ < head.size()) frame(out, head[step_], shape_);
+  else if (step_ < head.size() + motions_) motion(out, step_ - head.size());
+  else frame(out, tail[step_ - head.size() - motions_], shape_);
   ++step_;
   return true;
 }

@@ -1,0 +1,88 @@
+// The benchmark's synthetic job: its two shapes are the same job. Posted through the shipped
+// Fanuc post and PRP (gen_procs = Y), the flat shape (restructured by prp::ProcedureGeneration)
+// and the procedure shape (as SolidCAM sends it) must give the same NC program, so the benchmark
+// figures of both shapes measure the same work.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include "bench/synthetic_job.hpp"
+#include "postproc/engine.hpp"
+#include "toolpath/trace_reader.hpp"
+#include "toolpath/trace_writer.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The job written as a trace and read back (what the benchmark does with its file).
+std::string trace_of(bench::JobShape shape, std::size_t motions) {
+  std::ostringstream text;
+  bench::SyntheticJob job(motions, shape);
+  toolpath::TraceWriter writer(text);
+  toolpath::Command c;
+  while (job.next(c)) writer.write(c);
+  writer.flush();
+  return text.str();
+}
+
+std::string post(const std::string& trace, const std::string& prp) {
+  const fs::path dir = fs::temp_directory_path() / ("synthetic-job-test-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  postproc::EngineOptions engine_options;
+  engine_options.post = "../machines/fanuc/fanuc.gpp";
+  engine_options.prp = prp;
+  postproc::Engine engine(engine_options);
+  std::istringstream in(trace);
+  toolpath::TraceReader reader(in, "job.trace");
+  postproc::OutputFiles files(dir, postproc::OutputFiles::LineEnd::LF, true);
+  postproc::RunOptions options;
+  options.input_name = "job.trace";
+  engine.run(reader, files, options);
+  std::ostringstream out;
+  files.commit_to(out);
+  fs::remove_all(dir);
+  return out.str();
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(SyntheticJob, BothShapesPostTheSameProgramWithProcedureGeneration) {
+  const std::string flat = trace_of(bench::JobShape::flat, 40);
+  const std::string procedures = trace_of(bench::JobShape::procedures, 40);
+  ASSERT_NE(flat, procedures);
+  EXPECT_EQ(count(procedures, "@call_proc"), 1u);
+  EXPECT_EQ(count(procedures, "@end_proc"), 1u);
+  EXPECT_EQ(count(flat, "@call_proc"), 0u);
+
+  const std::string nc = post(procedures, "../machines/fanuc/fanuc.prp");
+  EXPECT_EQ(post(flat, "../machines/fanuc/fanuc.prp"), nc);
+  EXPECT_EQ(count(nc, " M98 P1 (F-BENCH)\n"), 1u);  // the main program calls the job
+  EXPECT_EQ(count(nc, "\nO1\n"), 1u);               // which follows it as subroutine 1
+  EXPECT_EQ(count(nc, " M99\n"), 1u);
+  EXPECT_EQ(count(nc, " G1 ") + count(nc, " G3 "), 40u);  // one block per motion
+}
+
+TEST(SyntheticJob, ShapesDifferOnlyAroundTheMotions) {
+  // Same motions, in the same order, in both shapes.
+  auto motions = [](bench::JobShape shape) {
+    bench::SyntheticJob job(100, shape);
+    toolpath::Command c;
+    std::string names;
+    while (job.next(c))
+      if (c.name == "@line" || c.name == "@arc") names += c.name;
+    return names;
+  };
+  EXPECT_EQ(motions(bench::JobShape::flat), motions(bench::JobShape::procedures));
+  EXPECT_EQ(count(motions(bench::JobShape::flat), "@"), 100u);
+}
+
+}  // namespace
