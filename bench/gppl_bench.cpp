@@ -45,10 +45,11 @@ int main(int argc, char** argv) {
                          feed = run.add_variable("feed");
   auto step = [&](long i) {
     // A contour: x and y change every command, z rarely, feed never; every 50th command a rapid.
-    run.assign(x, gppl::Value::of_numeric(double(i % 1000) * 0.137 - 50.0));
-    run.assign(y, gppl::Value::of_numeric(double(i % 777) * 0.291 + 3.5));
-    run.assign(z, gppl::Value::of_numeric(i % 50 == 0 ? 10.0 : -2.5));
-    run.assign(feed, gppl::Value::of_numeric(800.0));
+    // The typed assignments are the ones the engine uses for a command's numeric parameters.
+    run.assign_numeric(x, double(i % 1000) * 0.137 - 50.0);
+    run.assign_numeric(y, double(i % 777) * 0.291 + 3.5);
+    run.assign_numeric(z, i % 50 == 0 ? 10.0 : -2.5);
+    run.assign_numeric(feed, 800.0);
     run.call(i % 50 == 0 ? rapid : line);
   };
   for (long i = 0; i < 1000; ++i) step(i);  // warm up: buffers reach their steady size
