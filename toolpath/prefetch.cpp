@@ -15,7 +15,7 @@ PrefetchSource::~PrefetchSource() {
     std::lock_guard lock(mutex_);
     stop_ = true;
   }
-  changed_.notify_all();
+  space_.notify_one();
   worker_.join();
 }
 
@@ -24,7 +24,11 @@ void PrefetchSource::work() {
     std::size_t index;
     {
       std::unique_lock lock(mutex_);
-      changed_.wait(lock, [&] { return stop_ || filled_ - released_ < ring_.size(); });
+      if (!stop_ && filled_ - released_ == ring_.size()) {
+        worker_waits_ = true;
+        space_.wait(lock, [&] { return stop_ || 2 * (filled_ - released_) <= ring_.size(); });
+        worker_waits_ = false;
+      }
       if (stop_) return;
       index = filled_ % ring_.size();
     }
@@ -39,11 +43,14 @@ void PrefetchSource::work() {
       b.error = std::current_exception();
       b.last = true;
     }
+    bool wake;
     {
       std::lock_guard lock(mutex_);
       ++filled_;
+      worker_done_ = b.last;
+      wake = reader_waits_ && (b.last || 2 * (filled_ - released_) >= ring_.size());
     }
-    changed_.notify_all();
+    if (wake) data_.notify_one();
     if (b.last) return;
   }
 }
@@ -62,16 +69,25 @@ bool PrefetchSource::next(Command& out) {
         if (b.error) std::rethrow_exception(std::exchange(b.error, nullptr));
         return false;
       }
+      bool wake;
       {
         std::lock_guard lock(mutex_);
         ++released_;
+        // A waiting side is woken once half of the ring is free (worker) or filled (reader), not at
+        // every batch: it then handles several batches in one go instead of trading a wake-up per
+        // batch with the other side.
+        wake = worker_waits_ && 2 * (filled_ - released_) <= ring_.size();
       }
-      changed_.notify_all();
+      if (wake) space_.notify_one();
       holding_ = false;
     }
     if (finished_) return false;
     std::unique_lock lock(mutex_);
-    changed_.wait(lock, [&] { return filled_ > released_; });
+    if (filled_ == released_) {
+      reader_waits_ = true;
+      data_.wait(lock, [&] { return worker_done_ || 2 * (filled_ - released_) >= ring_.size(); });
+      reader_waits_ = false;
+    }
     holding_ = true;
     current_ = &ring_[released_ % ring_.size()];
     position_ = 0;

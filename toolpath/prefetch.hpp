@@ -47,8 +47,13 @@ private:
   // fills ring_[filled_ % size] while fewer than size are unreleased; the reader reads ring_[released_ % size].
   std::size_t filled_ = 0, released_ = 0;
   bool stop_ = false;
+  // Each side is woken only when it sleeps: a notify per batch costs a futex call even with nobody
+  // waiting, and on two cores the three stages of a run usually find their batch ready.
+  bool worker_waits_ = false, reader_waits_ = false;
+  bool worker_done_ = false;  // the last batch is filled
   std::mutex mutex_;
-  std::condition_variable changed_;
+  std::condition_variable space_;  // the worker waits for a released batch
+  std::condition_variable data_;   // the reader waits for a filled batch
   // The reader's side (only next() touches these).
   bool holding_ = false;  // ring_[released_ % size] is being read
   Batch* current_ = nullptr;  // that batch (no division per command)
