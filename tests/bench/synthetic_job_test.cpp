@@ -7,12 +7,12 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 
 #include "bench/synthetic_job.hpp"
-#include "postproc/engine.hpp"
-#include "toolpath/trace_reader.hpp"
+#include "tests/support/cli_run.hpp"
 #include "toolpath/trace_writer.hpp"
 
 namespace {
@@ -30,23 +30,14 @@ std::string trace_of(bench::JobShape shape, std::size_t motions) {
   return text.str();
 }
 
+// The main program `postproc run` prints for `trace` with the shipped Fanuc post.
 std::string post(const std::string& trace, const std::string& prp) {
-  const fs::path dir = fs::temp_directory_path() / ("synthetic-job-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  postproc::EngineOptions engine_options;
-  engine_options.post = "../machines/fanuc/fanuc.gpp";
-  engine_options.prp = prp;
-  postproc::Engine engine(engine_options);
-  std::istringstream in(trace);
-  toolpath::TraceReader reader(in, "job.trace");
-  postproc::OutputFiles files(dir, postproc::OutputFiles::LineEnd::LF, true);
-  postproc::RunOptions options;
-  options.input_name = "job.trace";
-  engine.run(reader, files, options);
-  std::ostringstream out;
-  files.commit_to(out);
-  fs::remove_all(dir);
-  return out.str();
+  const fs::path file = fs::temp_directory_path() / ("synthetic-job-test-" + std::to_string(::getpid()) + ".trace");
+  std::ofstream(file, std::ios::binary) << trace;
+  const auto run = test_support::run_cli({"run", "--quiet", "--post", "../machines/fanuc/fanuc.gpp", "--prp", prp, file.string()});
+  fs::remove(file);
+  EXPECT_EQ(run.code, 0) << run.err;
+  return run.out;
 }
 
 std::size_t count(const std::string& text, const std::string& what) {
