@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "toolpath/error.hpp"
+#include "toolpath/parameter_shelf.hpp"
 #include "toolpath/source.hpp"
 
 namespace toolpath {
@@ -39,7 +40,6 @@ private:
   [[noreturn]] void fail(std::size_t column, const std::string& message) const;
   bool parse_header(Command& out);
   void parse_body_line(Command& out, bool first_after_header, std::size_t first_non_blank);
-  std::size_t pair_name_at(const Command& out, std::size_t slot, std::string_view text, std::size_t at) const;
   void parse_pairs(Command& out, std::string_view text, std::size_t column, TraceLine::Kind otherwise);
 
   std::unique_ptr<std::istream> owned_;
@@ -55,6 +55,7 @@ private:
   std::size_t next_index_ = 0;
   std::size_t used_parameters_ = 0; // parameter slots of the command being read
   bool name_may_be_cut_ = false; // the header's name ran up to `==>` and may continue below
+  ParameterShelf shelf_;
   std::atomic<std::uintmax_t> bytes_read_{0};
 };
 

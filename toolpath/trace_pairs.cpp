@@ -1,0 +1,127 @@
+// The inline layout's `name:value` pairs (after `==>` and `..>`), the reader's hot loop: a job is
+// mostly numbers in pairs. The general rule (trace-format.md): an unquoted value runs to the
+// blanks before the next `name:`, or to the end of the line, and is parsed by parse_value. The
+// fast path below stores the common case, a number followed by blanks and the next `name:`, with
+// one scan; tests/toolpath/trace_reader_inline_test.cpp holds it to the general rule.
+#include <cassert>
+#include <string>
+
+#include "toolpath/trace_reader.hpp"
+#include "toolpath/trace_syntax.hpp"
+
+namespace toolpath {
+
+using namespace trace_syntax;
+
+namespace {
+
+// Where an unquoted inline value that starts at `v` ends: at the blanks before the next
+// `name:`, else at the end of the line. It may hold blanks.
+std::size_t value_end(std::string_view text, std::size_t v) {
+  for (std::size_t k = v; k < text.size(); ++k) {
+    if (is_blank(text[k])) {
+      const std::size_t m = skip_blanks(text, k);
+      if (pair_name_length(text.substr(m)) > 0) return k;
+      k = m - 1;
+    }
+  }
+  return text.size();
+}
+
+// A `name:` found in the text: its length (0: none), and whether it is the name the next parameter
+// slot already holds (then the slot is taken as it is: no copy, no key lookup).
+struct PairName {
+  std::size_t length = 0;
+  bool in_slot = false;
+};
+
+// The `name:` at `at` in `text`, for parameter slot `slot` of `out`. A recycled command mostly
+// holds the names of the same command in order (ParameterShelf), so the slot's name is tried
+// first: a keyed name is a known identifier, and followed by `:` it is the whole name there.
+PairName name_at(const Command& out, std::size_t slot, std::string_view text, std::size_t at) {
+  if (slot < out.parameters.size()) {
+    const Parameter& p = out.parameters[slot];
+    const std::size_t n = p.name.size();
+    if (p.key != ParamKey::none && at + n < text.size() && text[at + n] == ':' &&
+        same_short_text(text.substr(at, n), p.name))
+      return {n, true};
+  }
+  return {pair_name_length(text.substr(at)), false};
+}
+
+}  // namespace
+
+namespace trace_syntax {
+
+Parameter& new_slot(Command& out, std::size_t& used, std::string_view name) {
+  if (used == out.parameters.size()) out.parameters.emplace_back();
+  Parameter& p = out.parameters[used++];
+  p.rename(name);
+  return p;
+}
+
+}  // namespace trace_syntax
+
+// The text after `==>` or `..>`: blank-separated `name:value` pairs, or free text kept as
+// `otherwise`. `text` runs to the end of line_, so the byte after it is '\n', '\r' or '\0'
+// (read_line): the scans below may look at it.
+void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t column, TraceLine::Kind otherwise) {
+  assert(text.data() + text.size() == line_.data() + line_.size());
+  std::size_t i = skip_blanks(text, 0);
+  if (i == text.size()) return;
+  PairName name = name_at(out, used_parameters_, text, i);
+  if (name.length == 0) {
+    // Free text: the whole remainder without the one separating blank.
+    std::string_view kept = text.substr(text.front() == ' ' ? 1 : 0);
+    out.trace.push_back({otherwise, std::string(otherwise == TraceLine::Kind::Partial ? kept : trim_right(kept))});
+    return;
+  }
+  for (;;) {
+    // Here `name` is the `name:` at i.
+    Parameter& param = name.in_slot ? out.parameters[used_parameters_++]
+                                    : add_parameter(out, used_parameters_, text.substr(i, name.length));
+    const std::size_t v = i + name.length + 1;
+    const char first = text.data()[v];  // the terminator when the value is empty
+    std::size_t end;
+    if (first == '\'' || first == '"') {
+      // A quoted value ends at its quote followed by a blank or the end of the line.
+      std::size_t k = v + 1;
+      for (;; ++k) {
+        k = text.find(first, k);
+        if (k == std::string_view::npos)
+          fail(column + text.size(), std::string("expected closing ") + first + " of the string");
+        if (k + 1 == text.size() || is_blank(text[k + 1])) break;
+      }
+      end = k + 1;
+    } else if (const NumberScan number = scan_terminated_number(text.data() + v); number.length > 0) {
+      // The common case, a number (with its change flag) then blanks and the next `name:` or the
+      // end of the line: stored at once. Anything else after the digits takes the general path.
+      std::size_t k = v + number.length;
+      const ChangeFlag flag = flag_letter(text.data()[k]);
+      if (flag != ChangeFlag::None) ++k;
+      if (k == text.size() || is_blank(text[k])) {
+        std::size_t m = k == text.size() ? k : k + 1;
+        if (is_blank(text.data()[m])) m = skip_blanks(text, m);
+        const PairName next = m == text.size() ? PairName{} : name_at(out, used_parameters_, text, m);
+        if (m == text.size() || next.length > 0) {
+          if (!store_exact_number(param.value, number, flag))
+            store_number(param.value, number, text.substr(v, number.length), flag, Place{file_, line_number_, column + v});
+          if (m == text.size()) return;
+          i = m;
+          name = next;
+          continue;
+        }
+      }
+      end = value_end(text, v);
+    } else {
+      end = value_end(text, v);
+    }
+    parse_value_into(param.value, text.substr(v, end - v), Place{file_, line_number_, column + v});
+    i = skip_blanks(text, end);
+    if (i == text.size()) return;
+    name = name_at(out, used_parameters_, text, i);
+    if (name.length == 0) fail(column + i, "expected `name:value`");
+  }
+}
+
+}  // namespace toolpath

@@ -1,0 +1,215 @@
+// The lexical pieces of the `.trace` format shared by the reader (trace_reader.cpp) and the value
+// parser (trace_value.cpp): character classes, names, numbers. Internal to the toolpath library;
+// inline because the reader runs them on every byte of a job.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+
+#include "toolpath/command.hpp"
+#include "toolpath/error.hpp"
+#include "toolpath/short_text.hpp"
+#include "toolpath/value.hpp"
+
+namespace toolpath::trace_syntax {
+
+// ASCII character classes, locale-independent (traces are 8-bit text in any code page), from a
+// table: the reader classifies every byte of a job.
+enum : std::uint8_t { kBlank = 1, kDigit = 2, kIdentStart = 4, kIdentChar = 8 };
+inline constexpr std::array<std::uint8_t, 256> kClasses = [] {
+  std::array<std::uint8_t, 256> t{};
+  t[' '] = t['\t'] = kBlank;
+  for (int c = '0'; c <= '9'; ++c) t[c] = kDigit | kIdentChar;
+  for (int c = 'a'; c <= 'z'; ++c) t[c] = kIdentStart | kIdentChar;
+  for (int c = 'A'; c <= 'Z'; ++c) t[c] = kIdentStart | kIdentChar;
+  t['_'] = kIdentStart | kIdentChar;
+  return t;
+}();
+inline bool has_class(char c, std::uint8_t cls) { return (kClasses[static_cast<unsigned char>(c)] & cls) != 0; }
+inline bool is_blank(char c) { return has_class(c, kBlank); }
+inline bool is_digit(char c) { return has_class(c, kDigit); }
+inline bool is_ident_start(char c) { return has_class(c, kIdentStart); }
+inline bool is_ident_char(char c) { return has_class(c, kIdentChar); }
+
+inline std::size_t skip_blanks(std::string_view s, std::size_t i) {
+  // Mostly one blank or none; SolidCAM pads with runs of spaces: skip those eight at a time.
+  while (i < s.size() && is_blank(s[i])) {
+    if (i + 8 <= s.size() && std::memcmp(s.data() + i, "        ", 8) == 0) i += 8;
+    else ++i;
+  }
+  return i;
+}
+
+inline std::string_view trim_right(std::string_view s) {
+  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+// Length of an identifier at the start of `s` (0 if none).
+inline std::size_t ident_length(std::string_view s) {
+  if (s.empty() || !is_ident_start(s[0])) return 0;
+  const char* p = s.data() + 1;
+  const char* const end = s.data() + s.size();
+  while (p < end && is_ident_char(*p)) ++p;
+  return static_cast<std::size_t>(p - s.data());
+}
+
+// The length of the name when `s` starts with `identifier:` (how a name:value pair opens in the
+// inline layout), else 0.
+inline std::size_t pair_name_length(std::string_view s) {
+  std::size_t n = ident_length(s);
+  return n > 0 && n < s.size() && s[n] == ':' ? n : 0;
+}
+
+// Number syntax: [+-] digits [. digits] [e [+-] digits] with at least one digit in the mantissa.
+// The scan also collects the mantissa's digits, so that plain decimals need no second pass.
+struct NumberScan {
+  std::size_t length = 0;  // 0: not a number
+  bool numeric = false;    // it has a point or an exponent
+  bool exponent = false;
+  bool negative = false;
+  int digits = 0;          // in the mantissa
+  int decimals = 0;        // digits after the point
+  std::uint64_t mantissa = 0;  // exact while digits <= 19 (wrapped past that)
+};
+
+inline NumberScan scan_number(std::string_view s) {
+  NumberScan n;
+  const char* p = s.data();
+  const char* const end = p + s.size();
+  if (p < end && (*p == '+' || *p == '-')) n.negative = *p++ == '-';
+  // Digits accumulate without a bound check: the mantissa is used only when digits <= 19.
+  std::uint64_t mantissa = 0;
+  unsigned d = 0;
+  const char* start = p;
+  while (p < end && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) mantissa = mantissa * 10 + d, ++p;
+  int digits = static_cast<int>(p - start);
+  if (p < end && *p == '.') {
+    n.numeric = true;
+    start = ++p;
+    while (p < end && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) mantissa = mantissa * 10 + d, ++p;
+    n.decimals = static_cast<int>(p - start);
+    digits += n.decimals;
+  }
+  n.digits = digits;
+  n.mantissa = mantissa;
+  if (digits == 0) return n;
+  if (p < end && (*p == 'e' || *p == 'E')) {
+    const char* q = p + 1;
+    if (q < end && (*q == '+' || *q == '-')) ++q;
+    const char* exp_start = q;
+    while (q < end && is_digit(*q)) ++q;
+    if (q > exp_start) {
+      n.numeric = n.exponent = true;
+      p = q;
+    }
+  }
+  n.length = static_cast<std::size_t>(p - s.data());
+  return n;
+}
+
+// scan_number for text followed in memory by a byte that cannot continue a number: the reader's
+// lines are followed by '\n', '\r' or '\0'. The same result, without bound checks.
+inline NumberScan scan_terminated_number(const char* s) {
+  NumberScan n;
+  const char* p = s;
+  if (*p == '+' || *p == '-') n.negative = *p++ == '-';
+  std::uint64_t mantissa = 0;
+  unsigned d = 0;
+  const char* start = p;
+  while ((d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) mantissa = mantissa * 10 + d, ++p;
+  int digits = static_cast<int>(p - start);
+  if (*p == '.') {
+    n.numeric = true;
+    start = ++p;
+    while ((d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) mantissa = mantissa * 10 + d, ++p;
+    n.decimals = static_cast<int>(p - start);
+    digits += n.decimals;
+  }
+  n.digits = digits;
+  n.mantissa = mantissa;
+  if (digits == 0) return n;
+  if (*p == 'e' || *p == 'E') {
+    const char* q = p + 1;
+    if (*q == '+' || *q == '-') ++q;
+    const char* exp_start = q;
+    while (is_digit(*q)) ++q;
+    if (q > exp_start) {
+      n.numeric = n.exponent = true;
+      p = q;
+    }
+  }
+  n.length = static_cast<std::size_t>(p - s);
+  return n;
+}
+
+// The exact double of a scanned plain decimal when its mantissa (at most 19 digits) is below 2^53
+// and it has at most 22 decimals: mantissa and power of ten are then exact doubles and one
+// correctly rounded division gives what from_chars gives (Clinger's fast path). False otherwise.
+inline bool fast_decimal(const NumberScan& n, double& out) {
+  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  if (n.exponent || n.digits > 19 || n.mantissa > (std::uint64_t{1} << 53) || n.decimals > 22) return false;
+  const double v = static_cast<double>(n.mantissa) / kPow10[n.decimals];
+  out = n.negative ? -v : v;
+  return true;
+}
+
+// Where a value sits, for error messages; cheap to pass (no string copies on the hot path).
+struct Place {
+  std::string_view file;
+  std::size_t line = 0;
+  std::size_t column = 0;
+  [[noreturn]] void fail(std::size_t offset, const std::string& message) const {
+    throw InputError({std::string(file), line, column + offset}, message);
+  }
+};
+
+// The change flag written right after a number (`10T`, `10F`); None for anything else.
+inline ChangeFlag flag_letter(char c) {
+  switch (c) {
+    case 'T': case 't': return ChangeFlag::Changed;
+    case 'F': case 'f': return ChangeFlag::Unchanged;
+    default: return ChangeFlag::None;
+  }
+}
+
+// Stores a scanned number that needs no from_chars (an integer of up to 18 digits, or a decimal
+// fast_decimal takes) into `out`; false, and `out` untouched, for any other.
+inline bool store_exact_number(Value& out, const NumberScan& n, ChangeFlag flag) {
+  if (!n.numeric) {
+    if (n.digits > 18) return false;
+    const auto magnitude = static_cast<std::int64_t>(n.mantissa);  // exact in an int64
+    out.kind = ValueKind::Integer;
+    out.integer = n.negative ? -magnitude : magnitude;
+  } else {
+    double v;
+    if (!fast_decimal(n, v)) return false;
+    out.kind = ValueKind::Numeric;
+    out.numeric = v;
+  }
+  out.flag = flag;
+  return true;
+}
+
+// Names parameter slot `used` of `out` (added when there is none) and counts it (trace_pairs.cpp).
+Parameter& new_slot(Command& out, std::size_t& used, std::string_view name);
+
+// The next parameter slot of `out`, reusing the buffers of an earlier command's parameters. A
+// reused slot often held the same name: then nothing is copied and the key stays.
+inline Parameter& add_parameter(Command& out, std::size_t& used, std::string_view name) {
+  if (used < out.parameters.size() && same_short_text(out.parameters[used].name, name)) return out.parameters[used++];
+  return new_slot(out, used, name);
+}
+
+// Stores the scanned number `digits` (its text, without the flag) into `out` (trace_value.cpp).
+void store_number(Value& out, const NumberScan& n, std::string_view digits, ChangeFlag flag, const Place& where);
+
+// Parses one value's text into `out`, reusing its string buffer (trace_value.cpp).
+void parse_value_into(Value& out, std::string_view text, const Place& where);
+
+}  // namespace toolpath::trace_syntax
