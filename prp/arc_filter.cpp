@@ -96,20 +96,19 @@ bool ArcSettings::passes_everything() const {
 ArcFilter::ArcFilter(toolpath::CommandSource& input, ArcSettings settings, WarningSink warn)
     : input_(input), settings_(settings), warn_(std::move(warn)) {}
 
-bool ArcFilter::next(toolpath::Command& out) {
+bool ArcFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
   if (piece_ < pieces_) {
-    emit(out);
+    emit(out, kind);
     return true;
   }
-  if (!input_.next(out)) return false;
-  const CommandKind kind = command_kind(out);
+  if (!input_.next(out, kind)) return false;
   if (out.is_stream_command() && (kind == CommandKind::arc || kind == CommandKind::arc_5x)) {
     plan(out, kind);
     if (pieces_ > 0) {
       sets_.prepare(out, arc_, history_);
       history_.observe(out, kind);
       swap(original_, out);
-      emit(out);
+      emit(out, kind);
       return true;
     }
   }
@@ -225,7 +224,9 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind) {
   pieces_ = static_cast<int>(cuts_.size()) - 1;
 }
 
-void ArcFilter::emit(toolpath::Command& out) {
+// Hands out the next piece and its kind: a chord is a @line (@line_5x), a smaller arc keeps the
+// original's name.
+void ArcFilter::emit(toolpath::Command& out, CommandKind& kind) {
   const int i = piece_++;
   const bool last = piece_ == pieces_;
   const double to = chords_ > 0 ? (last ? arc_.sweep : arc_.sweep * (i + 1) / chords_)
@@ -234,10 +235,12 @@ void ArcFilter::emit(toolpath::Command& out) {
   const bool as_line = chords_ > 0 || piece.sweep < settings_.eps_angle || piece.length() < settings_.min_length;
   if (as_line) {
     make_motion(out, five_axis_ ? "@line_5x" : "@line", original_, piece.end, number(original_, ParamKey::feed));
+    kind = five_axis_ ? CommandKind::line_5x : CommandKind::line;
     sets_.write_vertex(out, piece.end, last);
   } else {
     out = original_;
     out.trace.clear();
+    kind = five_axis_ ? CommandKind::arc_5x : CommandKind::arc;
     const auto a = toolpath::geometry::axes(piece.plane);
     set_point(out, piece.end);
     set_number(out, ParamKey::xcenter_rel, piece.centre[a.first] - piece.start[a.first]);
@@ -259,7 +262,7 @@ void ArcFilter::emit(toolpath::Command& out) {
     }
   }
   if (last) out.trace = original_.trace;  // the original post's output belongs to the whole arc
-  track(out, command_kind(out));
+  track(out, kind);
 }
 
 }  // namespace prp

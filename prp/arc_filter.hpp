@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "prp/kind_source.hpp"
 #include "prp/kinematic_sets.hpp"
 #include "prp/motion.hpp"
 #include "prp/prp.hpp"
@@ -35,17 +36,17 @@ struct ArcSettings {
   bool passes_everything() const;
 };
 
-class ArcFilter final : public toolpath::CommandSource {
+class ArcFilter final : public KindSource {
 public:
   ArcFilter(toolpath::CommandSource& input, ArcSettings settings, WarningSink warn = {});
-  bool next(toolpath::Command& out) override;
+  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
 private:
   void plan(const toolpath::Command& arc, CommandKind kind);
-  void emit(toolpath::Command& out);
+  void emit(toolpath::Command& out, CommandKind& kind);
   void track(const toolpath::Command& out, CommandKind kind);
 
-  toolpath::CommandSource& input_;
+  KindedInput input_;
   ArcSettings settings_;
   WarningSink warn_;
   ToolPosition position_;

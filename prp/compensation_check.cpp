@@ -10,10 +10,9 @@ bool CompensationCheck::needed(const MachineParameters& params) {
   return params.has("min_delt_arc_rad") && params.logical("comp_exist") && !params.logical("comp_by_zero_tool");
 }
 
-bool CompensationCheck::next(toolpath::Command& out) {
-  if (!input_.next(out)) return false;
+bool CompensationCheck::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  if (!input_.next(out, kind)) return false;
   if (!out.is_stream_command()) return true;
-  const CommandKind kind = command_kind(out);
   if (kind == CommandKind::change_tool || kind == CommandKind::turn_change_tool) {
     if (auto d = number(out, "tool_diameter")) tool_radius_ = *d / 2;
     else if (auto r = number(out, "tool_radius")) tool_radius_ = *r;

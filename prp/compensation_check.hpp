@@ -8,19 +8,20 @@
 #include <optional>
 #include <string>
 
+#include "prp/kind_source.hpp"
 #include "prp/prp.hpp"
 
 namespace prp {
 
-class CompensationCheck final : public toolpath::CommandSource {
+class CompensationCheck final : public KindSource {
 public:
   CompensationCheck(toolpath::CommandSource& input, double margin, WarningSink warn)
       : input_(input), margin_(margin), warn_(std::move(warn)) {}
-  bool next(toolpath::Command& out) override;
+  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
   static bool needed(const MachineParameters& params);
 
 private:
-  toolpath::CommandSource& input_;
+  KindedInput input_;
   double margin_;
   WarningSink warn_;
   std::optional<double> tool_radius_;

@@ -2,10 +2,11 @@
 
 namespace prp {
 
-bool FullCoordinates::next(toolpath::Command& out) {
-  if (!input_.next(out)) return false;
-  if (out.is_stream_command() && is_motion_block(out) && !is(out, "@drill")) {
-    const bool cartesian = is(out, "@rapid_move") || is(out, "@line") || is(out, "@arc") || is(out, "@line_on");
+bool FullCoordinates::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  using K = CommandKind;
+  if (!input_.next(out, kind)) return false;
+  if (out.is_stream_command() && has(kMotionBlock, kind) && kind != K::drill) {
+    const bool cartesian = kind == K::rapid_move || kind == K::line || kind == K::arc || kind == K::line_on;
     static constexpr std::string_view names[] = {"xpos", "ypos", "zpos"};
     for (int i = 0; i < 3; ++i) {
       if (const toolpath::Value* v = out.find(names[i])) {
@@ -17,7 +18,7 @@ bool FullCoordinates::next(toolpath::Command& out) {
       }
     }
   }
-  position_.update(out);
+  position_.update(out, kind);
   return true;
 }
 

@@ -4,18 +4,19 @@
 // from the tool position. No command is added.
 #pragma once
 
+#include "prp/kind_source.hpp"
 #include "prp/motion.hpp"
 #include "prp/prp.hpp"
 
 namespace prp {
 
-class FullCoordinates final : public toolpath::CommandSource {
+class FullCoordinates final : public KindSource {
 public:
   explicit FullCoordinates(toolpath::CommandSource& input) : input_(input) {}
-  bool next(toolpath::Command& out) override;
+  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
 private:
-  toolpath::CommandSource& input_;
+  KindedInput input_;
   ToolPosition position_;
 };
 

@@ -71,11 +71,11 @@ PrecisionFilter::PrecisionFilter(toolpath::CommandSource& input, PrecisionSettin
 // One pass over the parameters. For each one the steps run in the order of spec 3.1: snap to zero,
 // keep an axis that barely moved, round. Values already at the precision stay as they are (an
 // integer stays an integer); a changed value becomes numeric and keeps its change flag.
-bool PrecisionFilter::next(toolpath::Command& out) {
-  if (!input_.next(out)) return false;
+bool PrecisionFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  if (!input_.next(out, kind)) return false;
   if (!out.is_stream_command()) return true;
   const double zero = s_.zero_value;
-  const bool moves = has(kMovesTool, command_kind(out));
+  const bool moves = has(kMovesTool, kind);
   const bool snap_axes = zero > 0 && moves;
   unsigned seen = 0;  // a name given twice: only its first occurrence counts, as with Command::find
   for (toolpath::Parameter& p : out.parameters) {

@@ -5,6 +5,7 @@
 
 #include <optional>
 
+#include "prp/kind_source.hpp"
 #include "prp/motion.hpp"
 #include "prp/prp.hpp"
 
@@ -26,13 +27,13 @@ std::optional<int> digits_of(double movement_precision);
 // the zero it gives for -0.4 may be +0 where std::round gives -0 (rounding writes no -0 anyway).
 double round_half_away(double y);
 
-class PrecisionFilter final : public toolpath::CommandSource {
+class PrecisionFilter final : public KindSource {
 public:
   PrecisionFilter(toolpath::CommandSource& input, PrecisionSettings settings);
-  bool next(toolpath::Command& out) override;
+  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
 private:
-  toolpath::CommandSource& input_;
+  KindedInput input_;
   PrecisionSettings s_;
   double movement_scale_, feed_scale_, spin_scale_;  // 10^digits
   ToolPosition sent_;

@@ -49,10 +49,17 @@ ProcedureGeneration::ProcedureGeneration(toolpath::CommandSource& input, const M
       range_(procedure_numbers(params)),
       first_label_(range_.dflt.value_or(range_.min.value_or(1))) {}
 
-bool ProcedureGeneration::next(toolpath::Command& out) {
+bool ProcedureGeneration::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  if (phase_ == Phase::PassThrough && !main_ && !has_held_) return input_.next(out, kind);
+  if (!produce(out)) return false;
+  kind = command_kind(out);
+  return true;
+}
+
+bool ProcedureGeneration::produce(toolpath::Command& out) {
   if (phase_ == Phase::Collect) phase_ = collect() ? Phase::Main : Phase::PassThrough;
   switch (phase_) {
-    case Phase::PassThrough:
+    case Phase::PassThrough: {
       if (main_ && main_->read(out)) return true;
       main_.reset();
       if (has_held_) {
@@ -60,7 +67,9 @@ bool ProcedureGeneration::next(toolpath::Command& out) {
         swap(out, held_);
         return true;
       }
-      return input_.next(out);
+      CommandKind kind;
+      return input_.next(out, kind);
+    }
     case Phase::Main: return next_main(out);
     case Phase::Body: return next_body(out);
     case Phase::Points: return next_points(out);
@@ -75,8 +84,8 @@ bool ProcedureGeneration::collect() {
   bool in_job = false, leading = false, in_cycle = false;
   Job job;
   Cycle cycle;
-  while (input_.next(c)) {
-    const K kind = command_kind(c);
+  K kind;
+  while (input_.next(c, kind)) {
     if (c.is_stream_command() && has(kStructure, kind)) {
       if (jobs_.empty() && !in_job) {  // a structured toolpath: hand it on as it is
         swap(held_, c);
@@ -211,7 +220,7 @@ bool ProcedureGeneration::next_main(toolpath::Command& out) {
       phase_ = Phase::Done;
       return false;
     }
-    return next(out);
+    return produce(out);
   }
   if (out.name == kJobMarker) {
     const Job& job = jobs_[out.index];
@@ -244,7 +253,7 @@ bool ProcedureGeneration::next_main(toolpath::Command& out) {
   if (kind == K::end_of_file && !bodies_sent_) {
     swap(end_of_file_, out);
     has_end_of_file_ = true;
-    if (start_next_procedure()) return next(out);
+    if (start_next_procedure()) return produce(out);
     swap(out, end_of_file_);
     has_end_of_file_ = false;
   }

@@ -18,14 +18,15 @@
 #include <vector>
 
 #include "prp/command_spool.hpp"
+#include "prp/kind_source.hpp"
 #include "prp/prp.hpp"
 
 namespace prp {
 
-class ProcedureGeneration final : public toolpath::CommandSource {
+class ProcedureGeneration final : public KindSource {
 public:
   ProcedureGeneration(toolpath::CommandSource& input, const MachineParameters& params);
-  bool next(toolpath::Command& out) override;
+  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
   // True when the parameters ask for procedures (gen_procs Y or C).
   static bool needed(const MachineParameters& params);
@@ -49,6 +50,7 @@ private:
   };
   enum class Phase { Collect, PassThrough, Main, Body, Points, Done };
 
+  bool produce(toolpath::Command& out);  // next() without the kind
   bool collect();        // reads the whole input; false when it is structured (pass through)
   void assign_labels();
   bool next_main(toolpath::Command& out);
@@ -59,7 +61,7 @@ private:
   void bracket(toolpath::Command& out, const char* name, std::int64_t label, std::optional<bool> end_of_job,
                std::size_t index);
 
-  toolpath::CommandSource& input_;
+  KindedInput input_;
   std::string mode_;  // Y or C
   bool drill_proc_;
   NumberRange range_;

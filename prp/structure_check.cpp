@@ -22,21 +22,28 @@ StructureCheck::StructureCheck(toolpath::CommandSource& input, const MachinePara
   if (p.has("num_homes")) num_homes_ = p.integer("num_homes");
 }
 
-bool StructureCheck::next(toolpath::Command& out) {
-  if (!input_.next(out)) return false;
-  if (out.is_stream_command()) check(out);
+namespace {
+
+using K = CommandKind;
+// The only commands check() looks at.
+constexpr KindSet kChecked = bit(K::call_proc) | bit(K::call_prms) | bit(K::loop) | bit(K::rotate) | bit(K::mirror) |
+                             bit(K::change_ref_point) | bit(K::compensation) | bit(K::proc) |
+                             bit(K::start_of_file) | bit(K::home_number);
+
+}  // namespace
+
+bool StructureCheck::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  if (!input_.next(out, kind)) return false;
+  if (has(kChecked, kind) && out.is_stream_command()) check(out, kind);
   return true;
 }
 
-void StructureCheck::check(const toolpath::Command& c) {
+void StructureCheck::check(const toolpath::Command& c, CommandKind kind) {
   // Each kind of mismatch is reported once, at its first command: a trace repeats them.
   auto warn = [&](const std::string& message) {
     if (warn_ && warned_.insert(c.name).second) warn_(c, message);
   };
-  using K = CommandKind;
-  const K kind = command_kind(c);
   switch (kind) {
-    case K::other: return;  // the commands below are the only ones checked
     case K::call_proc:
       if (procs_off_) warn("@call_proc although the PRP says gen_procs = N");
       break;
@@ -83,11 +90,10 @@ DefaultPositions::DefaultPositions(toolpath::CommandSource& input, const Machine
   if (p.has("dflt_end")) end_ = p.point("dflt_end");
 }
 
-bool DefaultPositions::next(toolpath::Command& out) {
-  if (!input_.next(out)) return false;
-  if (!out.is_stream_command()) return true;
-  const CommandKind kind = command_kind(out);
+bool DefaultPositions::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  if (!input_.next(out, kind)) return false;
   if (kind != CommandKind::start_program && kind != CommandKind::end_program) return true;
+  if (!out.is_stream_command()) return true;
   if (out.find("xpos") || out.find("ypos") || out.find("zpos")) return true;
   if (start_ && kind == CommandKind::start_program) set_point(out, *start_);
   if (end_ && kind == CommandKind::end_program) set_point(out, *end_);

@@ -7,19 +7,20 @@
 #include <set>
 #include <string>
 
+#include "prp/kind_source.hpp"
 #include "prp/prp.hpp"
 
 namespace prp {
 
-class StructureCheck final : public toolpath::CommandSource {
+class StructureCheck final : public KindSource {
 public:
   StructureCheck(toolpath::CommandSource& input, const MachineParameters& params, WarningSink warn);
-  bool next(toolpath::Command& out) override;
+  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
 private:
-  void check(const toolpath::Command& c);
+  void check(const toolpath::Command& c, CommandKind kind);
 
-  toolpath::CommandSource& input_;
+  KindedInput input_;
   WarningSink warn_;
   std::string gen_procs_;
   bool procs_off_, calls_with_parameters_;  // gen_procs N, D
@@ -31,13 +32,13 @@ private:
 
 // Fills the program's start and end positions from dflt_start / dflt_end (spec 3.8) when the
 // toolpath does not give them: @start_program and @end_program without xpos, ypos and zpos.
-class DefaultPositions final : public toolpath::CommandSource {
+class DefaultPositions final : public KindSource {
 public:
   DefaultPositions(toolpath::CommandSource& input, const MachineParameters& params);
-  bool next(toolpath::Command& out) override;
+  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
 private:
-  toolpath::CommandSource& input_;
+  KindedInput input_;
   std::optional<Eigen::Vector3d> start_, end_;
 };
 
