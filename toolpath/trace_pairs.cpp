@@ -4,6 +4,8 @@
 // fast path below stores the common case, a number followed by blanks and the next `name:`, with
 // one scan; tests/toolpath/trace_reader_inline_test.cpp holds it to the general rule.
 #include <cassert>
+#include <cstdint>
+#include <cstring>
 #include <string>
 
 #include "toolpath/trace_reader.hpp"
@@ -35,15 +37,33 @@ struct PairName {
   bool in_slot = false;
 };
 
-// The `name:` at `at` in `text`, for parameter slot `slot` of `out`. A recycled command mostly
-// holds the names of the same command in order (ParameterShelf), so the slot's name is tried
-// first: a keyed name is a known identifier, and followed by `:` it is the whole name there.
-PairName name_at(const Command& out, std::size_t slot, std::string_view text, std::size_t at) {
-  if (slot < out.parameters.size()) {
-    const Parameter& p = out.parameters[slot];
-    const std::size_t n = p.name.size();
-    if (p.key != ParamKey::none && at + n < text.size() && text[at + n] == ':' &&
-        same_short_text(text.substr(at, n), p.name))
+// Case-sensitive equality of `n` bytes, `n` the length of a parameter name: words of 8 or 4
+// bytes, the last one overlapping the one before.
+[[gnu::always_inline]] inline bool same_name_bytes(const char* a, const char* b, std::size_t n) {
+  auto word8 = [](const char* s) { std::uint64_t w; std::memcpy(&w, s, 8); return w; };
+  auto word4 = [](const char* s) { std::uint32_t w; std::memcpy(&w, s, 4); return w; };
+  if (n >= 8) return n <= 16 ? word8(a) == word8(b) && word8(a + n - 8) == word8(b + n - 8) : std::memcmp(a, b, n) == 0;
+  if (n >= 4) return word4(a) == word4(b) && word4(a + n - 4) == word4(b + n - 4);
+  for (std::size_t i = 0; i < n; ++i)
+    if (a[i] != b[i]) return false;
+  return true;
+}
+
+// The parameter slots of the command being read: [first, last), refreshed when a slot is added.
+struct Slots {
+  const Parameter* first;
+  const Parameter* last;
+  explicit Slots(const Command& c) : first(c.parameters.data()), last(first + c.parameters.size()) {}
+};
+
+// The `name:` at `at` in `text`, for parameter slot `slot`. A recycled command mostly holds the
+// names of the same command in order (ParameterShelf), so the slot's name is tried first: a keyed
+// name is a known identifier, and followed by `:` it is the whole name there.
+[[gnu::always_inline]] inline PairName name_at(const Slots& slots, std::size_t slot, std::string_view text, std::size_t at) {
+  if (const Parameter* p = slots.first + slot; p < slots.last) {
+    const std::size_t n = p->name.size();
+    if (p->key != ParamKey::none && at + n < text.size() && text[at + n] == ':' &&
+        same_name_bytes(text.data() + at, p->name.data(), n))
       return {n, true};
   }
   return {pair_name_length(text.substr(at)), false};
@@ -69,7 +89,8 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   assert(text.data() + text.size() == line_.data() + line_.size());
   std::size_t i = skip_blanks(text, 0);
   if (i == text.size()) return;
-  PairName name = name_at(out, used_parameters_, text, i);
+  Slots slots(out);
+  PairName name = name_at(slots, used_parameters_, text, i);
   if (name.length == 0) {
     // Free text: the whole remainder without the one separating blank.
     std::string_view kept = text.substr(text.front() == ' ' ? 1 : 0);
@@ -78,8 +99,14 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   }
   for (;;) {
     // Here `name` is the `name:` at i.
-    Parameter& param = name.in_slot ? out.parameters[used_parameters_++]
-                                    : add_parameter(out, used_parameters_, text.substr(i, name.length));
+    Parameter* param_slot;
+    if (name.in_slot) {
+      param_slot = &out.parameters[used_parameters_++];
+    } else {
+      param_slot = &add_parameter(out, used_parameters_, text.substr(i, name.length));
+      slots = Slots(out);  // it may have added a slot
+    }
+    Parameter& param = *param_slot;
     const std::size_t v = i + name.length + 1;
     const char first = text.data()[v];  // the terminator when the value is empty
     std::size_t end;
@@ -102,7 +129,7 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
       if (k == text.size() || is_blank(text[k])) {
         std::size_t m = k == text.size() ? k : k + 1;
         if (is_blank(text.data()[m])) m = skip_blanks(text, m);
-        const PairName next = m == text.size() ? PairName{} : name_at(out, used_parameters_, text, m);
+        const PairName next = m == text.size() ? PairName{} : name_at(slots, used_parameters_, text, m);
         if (m == text.size() || next.length > 0) {
           if (!store_exact_number(param.value, number, flag))
             store_number(param.value, number, text.substr(v, number.length), flag, Place{file_, line_number_, column + v});
@@ -119,7 +146,7 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
     parse_value_into(param.value, text.substr(v, end - v), Place{file_, line_number_, column + v});
     i = skip_blanks(text, end);
     if (i == text.size()) return;
-    name = name_at(out, used_parameters_, text, i);
+    name = name_at(slots, used_parameters_, text, i);
     if (name.length == 0) fail(column + i, "expected `name:value`");
   }
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -36,11 +37,22 @@ inline bool is_ident_start(char c) { return has_class(c, kIdentStart); }
 inline bool is_ident_char(char c) { return has_class(c, kIdentChar); }
 
 inline std::size_t skip_blanks(std::string_view s, std::size_t i) {
-  // Mostly one blank or none; SolidCAM pads with runs of spaces: skip those eight at a time.
-  while (i < s.size() && is_blank(s[i])) {
-    if (i + 8 <= s.size() && std::memcmp(s.data() + i, "        ", 8) == 0) i += 8;
-    else ++i;
+  // Mostly one blank or none; SolidCAM pads with runs of spaces: look at eight bytes at a time,
+  // the first that is not a space found from the word.
+  constexpr std::uint64_t kSpaces = 0x2020202020202020;
+  while (i + 8 <= s.size()) {
+    std::uint64_t w;
+    std::memcpy(&w, s.data() + i, 8);
+    const std::uint64_t other = w ^ kSpaces;
+    if (other == 0) {
+      i += 8;
+      continue;
+    }
+    if constexpr (std::endian::native == std::endian::little) i += static_cast<std::size_t>(std::countr_zero(other)) / 8;
+    if (s[i] != ' ' && s[i] != '\t') return i;
+    ++i;
   }
+  while (i < s.size() && is_blank(s[i])) ++i;
   return i;
 }
 
@@ -153,7 +165,9 @@ inline NumberScan scan_terminated_number(const char* s) {
 inline bool fast_decimal(const NumberScan& n, double& out) {
   static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                                       1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-  if (n.exponent || n.digits > 19 || n.mantissa > (std::uint64_t{1} << 53) || n.decimals > 22) return false;
+  // Up to 15 digits the mantissa is below 10^15 < 2^53 and there are at most 15 decimals.
+  if (n.exponent || (n.digits > 15 && (n.digits > 19 || n.mantissa > (std::uint64_t{1} << 53) || n.decimals > 22)))
+    return false;
   const double v = static_cast<double>(n.mantissa) / kPow10[n.decimals];
   out = n.negative ? -v : v;
   return true;
@@ -170,13 +184,13 @@ struct Place {
 };
 
 // The change flag written right after a number (`10T`, `10F`); None for anything else.
-inline ChangeFlag flag_letter(char c) {
-  switch (c) {
-    case 'T': case 't': return ChangeFlag::Changed;
-    case 'F': case 'f': return ChangeFlag::Unchanged;
-    default: return ChangeFlag::None;
-  }
-}
+inline constexpr std::array<ChangeFlag, 256> kFlagLetters = [] {
+  std::array<ChangeFlag, 256> t{};
+  t['T'] = t['t'] = ChangeFlag::Changed;
+  t['F'] = t['f'] = ChangeFlag::Unchanged;
+  return t;
+}();
+inline ChangeFlag flag_letter(char c) { return kFlagLetters[static_cast<unsigned char>(c)]; }
 
 // Stores a scanned number that needs no from_chars (an integer of up to 18 digits, or a decimal
 // fast_decimal takes) into `out`; false, and `out` untouched, for any other.

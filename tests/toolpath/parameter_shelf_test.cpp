@@ -50,6 +50,8 @@ TEST(ParameterShelf, RotatingBuffersReadAsFreshOnes) {
     alternating += "(1)@arc ==> xpos:1 ypos:2 zpos:3 feed:4 xcenter:5\n           ..> ycenter:6 arc_direction:CW\n";
     if (k % 7 == 0) alternating += "(1)@line ==> ypos:2 xpos:1 user_value:'x y'\n";
     if (k % 11 == 0) alternating += "@rapid\nxpos : 1\nYPOS : 2T\n";
+    if (k % 5 == 0)  // near misses of the names the slots hold: longer, other case, a prefix
+      alternating += "(1)@arc ==> xpos:1 ypos2:2 ZPOS:3 fee:4 xcenter_reL:5\n           ..> ycenter:6 arc_direction:CW\n";
     if (k % 13 == 0) alternating += "(1)@c" + std::to_string(k) + " ==> a:1 b:2\n";
   }
   const std::string texts[] = {alternating, slurp("golden/solidcam-fanuc/toolpath.trace"),

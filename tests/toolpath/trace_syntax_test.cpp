@@ -45,4 +45,30 @@ TEST(TraceSyntax, TerminatedNumberScanOnRandomText) {
   }
 }
 
+// skip_blanks looks at eight bytes at a time when that many are left: it must stop exactly where
+// a byte-by-byte skip stops, for runs of spaces and tabs of every length and position.
+TEST(TraceSyntax, SkipBlanksAsByteByByte) {
+  std::mt19937 rng(20261124);
+  const std::string alphabet = "     \t\tx:";
+  for (int round = 0; round < 50000; ++round) {
+    std::string text;
+    const std::size_t length = rng() % 30;
+    for (std::size_t k = 0; k < length; ++k) text += alphabet[rng() % alphabet.size()];
+    for (std::size_t from = 0; from <= text.size(); ++from) {
+      std::size_t expected = from;
+      while (expected < text.size() && (text[expected] == ' ' || text[expected] == '\t')) ++expected;
+      ASSERT_EQ(toolpath::trace_syntax::skip_blanks(text, from), expected) << '`' << text << "` from " << from;
+    }
+  }
+}
+
+TEST(TraceSyntax, FlagLetters) {
+  for (int c = 0; c < 256; ++c) {
+    const auto expected = c == 'T' || c == 't'   ? toolpath::ChangeFlag::Changed
+                          : c == 'F' || c == 'f' ? toolpath::ChangeFlag::Unchanged
+                                                 : toolpath::ChangeFlag::None;
+    EXPECT_EQ(toolpath::trace_syntax::flag_letter(static_cast<char>(c)), expected) << c;
+  }
+}
+
 }  // namespace

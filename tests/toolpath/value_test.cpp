@@ -94,7 +94,11 @@ TEST(ParseValue, NumbersAsFromChars) {
                          "0.00000000000000000000001",  // 23 decimals
                          "1e-7",
                          "12345678901234567890.5",
-                         "+3.25"};
+                         "+3.25",
+                         "99999999999999.9",       // 15 digits: the short check of the fast path
+                         "999999999999999.9",      // 16 digits: the full check
+                         "0.000000000000001",
+                         "0.0000000000000001"};
   for (const char* text : cases) {
     SCOPED_TRACE(text);
     toolpath::Value v = toolpath::parse_value(text, {"f", 1, 1});
@@ -106,6 +110,15 @@ TEST(ParseValue, NumbersAsFromChars) {
     std::string text = (random() % 2 ? "-" : "") + std::to_string(random() % 100000000000ULL);
     const std::size_t decimals = random() % 12;
     text.insert(text.size() - std::min(decimals, text.size() - (text[0] == '-')), ".");
+    toolpath::Value v = toolpath::parse_value(text, {"f", 1, 1});
+    if (std::bit_cast<std::uint64_t>(v.numeric) != std::bit_cast<std::uint64_t>(reference(text))) {
+      ADD_FAILURE() << text;
+      return;
+    }
+  }
+  for (int i = 0; i < 100000; ++i) {  // 12 to 19 digits, around the 15-digit and 2^53 limits
+    std::string text = std::to_string(random() % 10000000000000000000ULL);
+    text.insert(text.size() - std::min<std::size_t>(random() % 20, text.size()), ".");
     toolpath::Value v = toolpath::parse_value(text, {"f", 1, 1});
     if (std::bit_cast<std::uint64_t>(v.numeric) != std::bit_cast<std::uint64_t>(reference(text))) {
       ADD_FAILURE() << text;
