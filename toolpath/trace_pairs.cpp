@@ -1,8 +1,8 @@
 // The inline layout's `name:value` pairs (after `==>` and `..>`), the reader's hot loop: a job is
 // mostly numbers in pairs. The general rule (trace-format.md): an unquoted value runs to the
 // blanks before the next `name:`, or to the end of the line, and is parsed by parse_value. The
-// fast path below stores the common case, a number followed by blanks and the next `name:`, with
-// one scan; tests/toolpath/trace_reader_inline_test.cpp holds it to the general rule.
+// fast path below stores the common cases, a number or a bare word followed by blanks and the
+// next `name:`, with one scan; tests/toolpath/trace_reader_inline_test.cpp holds it to the general rule.
 #include <cassert>
 #include <cstdint>
 #include <cstring>
@@ -97,6 +97,18 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
     out.trace.push_back({otherwise, std::string(otherwise == TraceLine::Kind::Partial ? kept : trim_right(kept))});
     return;
   }
+  // Where the next pair starts when the value's first token, ending at `k`, is followed by blanks
+  // and the next `name:` (then in `next`) or by the end of the line (text.size()); npos otherwise.
+  PairName next;
+  auto next_pair_after = [&](std::size_t k) {
+    if (k == text.size()) return k;
+    if (!is_blank(text[k])) return std::string_view::npos;
+    std::size_t m = k + 1;
+    if (is_blank(text.data()[m])) m = skip_blanks(text, m);
+    if (m == text.size()) return m;
+    next = name_at(slots, used_parameters_, text, m);
+    return next.length > 0 ? m : std::string_view::npos;
+  };
   for (;;) {
     // Here `name` is the `name:` at i.
     Parameter* param_slot;
@@ -126,18 +138,25 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
       std::size_t k = v + number.length;
       const ChangeFlag flag = flag_letter(text.data()[k]);
       if (flag != ChangeFlag::None) ++k;
-      if (k == text.size() || is_blank(text[k])) {
-        std::size_t m = k == text.size() ? k : k + 1;
-        if (is_blank(text.data()[m])) m = skip_blanks(text, m);
-        const PairName next = m == text.size() ? PairName{} : name_at(slots, used_parameters_, text, m);
-        if (m == text.size() || next.length > 0) {
-          if (!store_exact_number(param.value, number, flag))
-            store_number(param.value, number, text.substr(v, number.length), flag, Place{file_, line_number_, column + v});
-          if (m == text.size()) return;
-          i = m;
-          name = next;
-          continue;
-        }
+      if (const std::size_t m = next_pair_after(k); m != std::string_view::npos) {
+        if (!store_exact_number(param.value, number, flag))
+          store_number(param.value, number, text.substr(v, number.length), flag, Place{file_, line_number_, column + v});
+        if (m == text.size()) return;
+        i = m;
+        name = next;
+        continue;
+      }
+      end = value_end(text, v);
+    } else if (is_ident_start(first)) {
+      // A bare word (an enumeration, TRUE, FALSE) then the same: stored at once as well.
+      std::size_t k = v + 1;
+      while (is_ident_char(text.data()[k])) ++k;
+      if (const std::size_t m = next_pair_after(k); m != std::string_view::npos) {
+        store_word(param.value, text.substr(v, k - v));
+        if (m == text.size()) return;
+        i = m;
+        name = next;
+        continue;
       }
       end = value_end(text, v);
     } else {

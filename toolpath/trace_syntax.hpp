@@ -223,6 +223,9 @@ inline Parameter& add_parameter(Command& out, std::size_t& used, std::string_vie
 // Stores the scanned number `digits` (its text, without the flag) into `out` (trace_value.cpp).
 void store_number(Value& out, const NumberScan& n, std::string_view digits, ChangeFlag flag, const Place& where);
 
+// Stores a bare word (an identifier): TRUE or FALSE in any case as Logical, else an Enum (trace_value.cpp).
+void store_word(Value& out, std::string_view word);
+
 // Parses one value's text into `out`, reusing its string buffer (trace_value.cpp).
 void parse_value_into(Value& out, std::string_view text, const Place& where);
 

@@ -45,15 +45,22 @@ void parse_value_into(Value& out, std::string_view text, const Place& where) {
     const ChangeFlag flag = rest == 1 ? flag_letter(text.back()) : ChangeFlag::None;
     if (rest == 0 || flag != ChangeFlag::None) return store_number(out, n, text.substr(0, n.length), flag, where);
   }
-  if (iequals(text, "true") || iequals(text, "false")) {
+  // A bare word is TRUE, FALSE or an enumeration; anything else is free text (user parameters may
+  // hold unquoted words with blanks: `Salamat Abzar Check Shavad!!`).
+  if (ident_length(text) == text.size()) return store_word(out, text);
+  out.kind = ValueKind::String;
+  out.text.assign(text);
+}
+
+void store_word(Value& out, std::string_view word) {
+  out.flag = ChangeFlag::None;
+  if (iequals(word, "true") || iequals(word, "false")) {
     out.kind = ValueKind::Logical;
-    out.logical = iequals(text, "true");
+    out.logical = iequals(word, "true");
     return;
   }
-  // A bare word is an enumeration; anything else is free text (user parameters may hold unquoted
-  // words with blanks: `Salamat Abzar Check Shavad!!`).
-  out.kind = ident_length(text) == text.size() ? ValueKind::Enum : ValueKind::String;
-  out.text.assign(text);
+  out.kind = ValueKind::Enum;
+  out.text.assign(word);
 }
 
 }  // namespace trace_syntax

@@ -99,7 +99,9 @@ TEST(TraceReaderInline, NumbersAsTheGeneralRuleReadsThem) {
                           "123456789012345.6", "1234567890123456789.5", "9007199254740993", "9007199254740993.0",
                           "9007199254740993.5", "1.7976931348623157e308", "1e400", "4.9e-324", "1e-400",
                           "0.000000000000000000000001", "10T", "10F", "1.5t", "1.5f", "10TT", "10x", "1.2.3", "-",
-                          "+", ".", "12 34", "1.5 T", "12abc", "CW", "TRUE", "1:2", "1x:2", "3.0e1T"};
+                          "+", ".", "12 34", "1.5 T", "12abc", "CW", "TRUE", "1:2", "1x:2", "3.0e1T",
+                          "ccw", "true", "False", "FALSE", "truex", "tru", "_x", "a_b9", "e5", "E", "T", "x.y", "x-y",
+                          "CW:1", "CW'", "x\ty"};
   for (const char* v : values) {
     for (const char* after : {"", "   ", " b:1", "    b:1.0", "\tb:2 ", " 7", " b c:1"}) {
       check(std::string(" a:") + v + after);
@@ -110,7 +112,7 @@ TEST(TraceReaderInline, NumbersAsTheGeneralRuleReadsThem) {
 
 TEST(TraceReaderInline, RandomPairs) {
   std::mt19937 rng(20261122);
-  const std::string alphabet = "0123456789+-.eETFtf x:ab\t";
+  const std::string alphabet = "0123456789+-.eETFtf x:ab\t_rue";
   for (int round = 0; round < 30000; ++round) {
     std::string pairs = " a:";
     const std::size_t length = rng() % 14;
