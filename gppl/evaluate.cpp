@@ -127,7 +127,10 @@ bool Interpreter::State::condition(std::uint32_t node) {
       return compare(n.op, integer_of(*left), integer_of(*right));
     }
     case NodeKind::Variable:
-      if (n.simple) return to_logical(cell(program.refs[n.a]).value);
+      if (n.simple) {
+        const Value& v = cell(program.refs[n.a]).value;
+        return v.type == Type::Logical ? v.logical : to_logical(v);
+      }
       break;
     case NodeKind::Attribute:
       if (n.simple) {

@@ -163,6 +163,8 @@ public:
   void assign_numeric(VariableId id, double value, ChangeOverride change = ChangeOverride::Compute);
   void assign_logical(VariableId id, bool value, ChangeOverride change = ChangeOverride::Compute);
   void assign_string(VariableId id, std::string_view value, ChangeOverride change = ChangeOverride::Compute);
+  // assign_string() of texts[i] to ids[i] in one call (prev_command, current_command, next_command).
+  void assign_strings(std::span<const VariableId> ids, std::span<const std::string_view> texts);
   // Host assignment to one element of a host array (chng_cond<<3,n>>); indices are 1-based.
   void assign_element(VariableId id, std::span<const int> indices, const Value& value,
                       ChangeOverride change = ChangeOverride::Compute);

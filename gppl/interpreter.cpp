@@ -124,10 +124,26 @@ void Interpreter::assign_string(VariableId id, std::string_view value, ChangeOve
   State& s = *state_;
   Cell* c = s.typed_host_cell(id, Type::String);
   if (!c) return assign_slowly(*this, id, value, [](std::string_view v) { return Value::of_string(std::string(v)); }, change);
-  const bool differs = std::string_view(c->value.text) != value;
+  const bool differs = !same_text(c->value.text, value);
   if (differs) c->value.text.assign(value);
   State::mark_assigned(*c, differs, change);
   s.note_host_assignment(id);
+}
+
+void Interpreter::assign_strings(std::span<const VariableId> ids, std::span<const std::string_view> texts) {
+  State& s = *state_;
+  const std::size_t n = std::min(ids.size(), texts.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    Cell* c = s.typed_host_cell(ids[i], Type::String);
+    if (!c) {
+      assign_string(ids[i], texts[i]);
+      continue;
+    }
+    const bool differs = !same_text(c->value.text, texts[i]);
+    if (differs) c->value.text.assign(texts[i].data(), texts[i].size());
+    State::mark_assigned(*c, differs, ChangeOverride::Compute);
+    s.note_host_assignment(ids[i]);
+  }
 }
 
 void Interpreter::assign_element(VariableId id, std::span<const int> indices, const Value& value, ChangeOverride change) {

@@ -38,9 +38,8 @@ inline bool same_text(std::string_view a, std::string_view b) {
   auto word4 = [](const char* s) { std::uint32_t w; std::memcpy(&w, s, 4); return w; };
   if (n >= 8) return word8(p) == word8(q) && word8(p + n - 8) == word8(q + n - 8);
   if (n >= 4) return word4(p) == word4(q) && word4(p + n - 4) == word4(q + n - 4);
-  for (std::size_t i = 0; i < n; ++i)
-    if (p[i] != q[i]) return false;
-  return true;
+  if (n == 0) return true;
+  return p[0] == q[0] && p[n / 2] == q[n / 2] && p[n - 1] == q[n - 1];  // 1 to 3 bytes: all of them
 }
 
 struct FormatCache {
@@ -183,6 +182,18 @@ struct Interpreter::State {
   void generate(std::uint32_t first, std::uint32_t count);
   void render(const GenItem& item, std::string& out);
   const DisplayFormat& format_for(const GenItem& item, const Value& v);
+  // The display format of a variable item when it is parsed already and still applies (a constant
+  // format, or the `name_f` text the item's cache holds); nullptr: format_for() works it out.
+  const DisplayFormat* known_format(const GenItem& item) {
+    if (item.format_kind == FormatKind::Constant) {
+      const FormatCache& constant = constant_formats[item.format];
+      return constant.format ? &*constant.format : nullptr;
+    }
+    if (item.format_kind != FormatKind::Default || item.name_format == kNone) return nullptr;
+    const std::string& spec = cell(program.refs[item.name_format]).value.text;
+    const FormatCache& site = format_sites[item.site];
+    return !spec.empty() && site.format && same_text(site.spec, spec) ? &*site.format : nullptr;
+  }
   // The parsed display format of `spec`, parsed again only when the text changed since last time.
   const DisplayFormat& cached(FormatCache& cache, std::string_view spec, SourcePos pos) {
     if (cache.format && same_text(cache.spec, spec)) return *cache.format;

@@ -14,10 +14,11 @@ namespace {
 // `!!verb file=X!!` lines are executed by the host, never written (6.7): no blank removal or
 // end-of-block text for them.
 bool is_directive(std::string_view line) {
-  const auto first = line.find_first_not_of(' ');
-  const auto last = line.find_last_not_of(' ');
-  if (first == std::string_view::npos || last - first + 1 < 4) return false;
-  return line.substr(first, 2) == "!!" && line.substr(last - 1, 2) == "!!";
+  std::size_t first = 0, end = line.size();  // a loop: find_first_not_of costs a memchr per character
+  while (first < end && line[first] == ' ') ++first;
+  if (first == end || line[first] != '!') return false;
+  while (line[end - 1] == ' ') --end;
+  return end - first >= 4 && line[first + 1] == '!' && line[end - 1] == '!' && line[end - 2] == '!';
 }
 
 constexpr std::string_view kIntegerDefault = "5.0(p)";
@@ -150,28 +151,35 @@ void Interpreter::State::render(const GenItem& item, std::string& out) {
     out += program.constants[item.a].text;
     return;
   }
-  const Value* value = nullptr;
-  bool pushed = false;
-  if (item.ref != kNone) {
-    value = &element(program.refs[item.ref]).value;
-  } else {
-    Value& v = push_scratch();
-    pushed = true;
-    eval(item.a, v);
-    value = &v;
-  }
-  if (value->type == Type::String) {
-    out += value->text;  // strings print verbatim; a format is ignored (6.4)
-  } else {
-    const DisplayFormat& f = format_for(item, *value);
+  if (item.ref != kNone) {  // a variable: no scratch value, and its format is usually known already
+    const Value& value = element(program.refs[item.ref]).value;
+    if (value.type == Type::String) {
+      out += value.text;  // strings print verbatim; a format is ignored (6.4)
+      return;
+    }
+    const DisplayFormat* f = known_format(item);
+    if (!f) f = &format_for(item, value);
     try {
-      append_formatted(out, f, *value);
+      append_formatted(out, *f, value);
     } catch (const Error& e) {
-      if (pushed) pop_scratch();
+      throw Error(e.number(), program.position(item.pos), e.text());
+    }
+    return;
+  }
+  Value& v = push_scratch();
+  eval(item.a, v);
+  if (v.type == Type::String) {
+    out += v.text;
+  } else {
+    const DisplayFormat& f = format_for(item, v);
+    try {
+      append_formatted(out, f, v);
+    } catch (const Error& e) {
+      pop_scratch();
       throw Error(e.number(), program.position(item.pos), e.text());
     }
   }
-  if (pushed) pop_scratch();
+  pop_scratch();
 }
 
 void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
@@ -225,10 +233,10 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
         append(piece);
         break;
       case ItemKind::Group: {
+        // Its members follow it: a group that prints simply goes on with them (nested groups too).
+        if (group_required(item)) break;
         const std::uint32_t members = item.a;
-        if (group_required(item)) {
-          generate(i + 1, members);
-        } else if (item.has_gcode && globals[program.slots.gcode_space].value.logical) {
+        if (item.has_gcode && globals[program.slots.gcode_space].value.logical) {
           // gcode_space: the suppressed G field becomes as many blanks as it would have printed (6.5).
           piece.clear();
           for (std::uint32_t k = i + 1; k <= i + members; ++k) {

@@ -3,7 +3,9 @@
 // and the host's typed assignments (assign_numeric, ...) against assign() with a Value.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <functional>
+#include <string_view>
 
 #include "support.hpp"
 
@@ -194,6 +196,41 @@ TEST(FastHostAssign, SameAsValueAssignment) {
       }
       EXPECT_EQ(error_a, error_b) << variable << " step " << i;
       EXPECT_EQ(describe(*by_value.run, a), describe(*typed.run, b)) << variable << " step " << i;
+    }
+  }
+}
+
+// assign_strings() (the engine's prev/current/next_command) against one assign_string() each: same
+// texts, change and active attributes, across repeats, changes and a reset of the change memory.
+TEST(FastHostAssign, StringsInOneCallAsOneByOne) {
+  const std::string source =
+      "@init_post\n  global string p\n  global string c\n  global string n\nendp\n"
+      "@t\n  x = implicit\nendp\n";
+  const std::vector<std::array<std::string, 3>> steps = {
+      {"", "@start_of_file", "@line"}, {"@start_of_file", "@line", "@arc"}, {"@line", "@arc", "@line"},
+      {"@arc", "@line", "@line"},      {"@line", "@line", "@line"},         {"@line", "@line", "@change_tool"},
+      {"@line", "@change_tool", ""},   {"@change_tool", "", "a name longer than sixteen bytes"},
+      {"", "a name longer than sixteen bytes", "a name longer than sixteen bytes"}};
+  for (const char* last : {"n", "implicit", "added_by_host"}) {
+    Post one_by_one(source), together(source);
+    one_by_one.run->start();
+    together.run->start();
+    std::array<gppl::VariableId, 3> ids{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const char* name = k == 0 ? "p" : k == 1 ? "c" : last;
+      ids[k] = one_by_one.run->add_variable(name);
+      ASSERT_EQ(ids[k], together.run->add_variable(name));
+    }
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      if (i == 4) {
+        one_by_one.run->reset_change_memory();
+        together.run->reset_change_memory();
+      }
+      const std::array<std::string_view, 3> texts{steps[i][0], steps[i][1], steps[i][2]};
+      for (std::size_t k = 0; k < 3; ++k) one_by_one.run->assign_string(ids[k], texts[k]);
+      together.run->assign_strings(ids, texts);
+      for (std::size_t k = 0; k < 3; ++k)
+        EXPECT_EQ(describe(*one_by_one.run, ids[k]), describe(*together.run, ids[k])) << last << " step " << i << " " << k;
     }
   }
 }
