@@ -8,6 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 
 #include "toolpath/value.hpp"
 
@@ -17,6 +18,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t npos = static_cast<std::size_t>(-1);
+constexpr std::size_t kBufferSize = std::size_t{1} << 16;
 
 // Hands each complete line of `chunk` (LF or CR LF ends) to `line`; an unfinished one stays in `partial`.
 void split_lines(std::string_view chunk, std::string& partial, const OutputFiles::LineCallback& line) {
@@ -47,7 +49,7 @@ fs::path make_private_dir(const fs::path& parent) {
 }  // namespace
 
 OutputFiles::OutputFiles(fs::path directory, LineEnd line_end, bool for_stream)
-    : directory_(std::move(directory)), line_end_(line_end) {
+    : directory_(std::move(directory)), line_end_(line_end), buffer_(kBufferSize) {
   if (directory_.empty()) directory_ = ".";
   temp_dir_ = make_private_dir(for_stream ? fs::temp_directory_path() : directory_);
   create("");
@@ -55,6 +57,7 @@ OutputFiles::OutputFiles(fs::path directory, LineEnd line_end, bool for_stream)
 }
 
 OutputFiles::~OutputFiles() {
+  buffered_ = 0;  // the run failed or was committed: the temporaries go
   for (auto& e : entries_) close_handle(e);
   std::error_code ignored;
   fs::remove_all(temp_dir_, ignored);
@@ -97,6 +100,7 @@ void OutputFiles::open_handle(Entry& e, const char* mode) {
 }
 
 void OutputFiles::close_handle(Entry& e) {
+  drain();
   if (!e.file) return;
   bool failed = std::fclose(e.file) != 0;
   e.file = nullptr;
@@ -105,6 +109,7 @@ void OutputFiles::close_handle(Entry& e) {
 
 void OutputFiles::switch_to(std::size_t index) {
   if (index == current_) return;
+  drain();
   if (current_ != 0) close_handle(entries_[current_]);  // the main file stays open, others are reopened
   current_ = index;
   open_handle(entries_[current_], "ab");
@@ -112,13 +117,25 @@ void OutputFiles::switch_to(std::size_t index) {
 
 void OutputFiles::write_line(std::string_view line) {
   if (unwritten_slots_ > 0 && line.find('\x02') != std::string_view::npos) line = place_slots(line, slot_line_);
+  const std::size_t n = line.size() + (line_end_ == LineEnd::CRLF ? 2 : 1);
+  entries_[current_].size += n;
+  if (buffered_ + n > buffer_.size()) {
+    drain();
+    if (n > buffer_.size()) buffer_.resize(n);
+  }
+  char* out = buffer_.data() + buffered_;
+  if (!line.empty()) std::memcpy(out, line.data(), line.size());
+  out += line.size();
+  if (line_end_ == LineEnd::CRLF) *out++ = '\r';
+  *out = '\n';
+  buffered_ += n;
+}
+
+void OutputFiles::drain() {
+  if (buffered_ == 0) return;
+  const std::size_t n = std::exchange(buffered_, 0);
   Entry& e = entries_[current_];
-  e.size += line.size() + (line_end_ == LineEnd::CRLF ? 2 : 1);
-  std::FILE* f = e.file;
-  bool ok = fwrite_unlocked(line.data(), 1, line.size(), f) == line.size();
-  if (line_end_ == LineEnd::CRLF) ok = ok && fputc_unlocked('\r', f) != EOF;
-  ok = ok && fputc_unlocked('\n', f) != EOF;
-  if (!ok) io_failure("write", entries_[current_].temp_path);
+  if (!e.file || fwrite_unlocked(buffer_.data(), 1, n, e.file) != n) io_failure("write", e.temp_path);
 }
 
 void OutputFiles::execute(const Directive& d, const LineCallback& copied_line) {
@@ -174,6 +191,7 @@ void OutputFiles::copy_into_current(std::string_view name, const LineCallback& c
   std::ifstream in(source, std::ios::binary);
   if (!in) throw std::runtime_error("cannot copy `" + std::string(name) + "`: no such file in this run or in `" +
                                     directory_.string() + "`");
+  drain();
   std::FILE* out = entries_[current_].file;
   std::string partial;  // a line cut by the end of a buffer
   std::string carry;    // a placeholder cut by the end of a buffer

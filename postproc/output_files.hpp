@@ -84,6 +84,7 @@ private:
   void open_handle(Entry& e, const char* mode);
   void close_handle(Entry& e);
   void switch_to(std::size_t index);
+  void drain();  // the buffered lines into the current file's stream
   void copy_into_current(std::string_view name, const LineCallback& copied_line);
   std::string display_name(const Entry& e) const;
   // output_slots.cpp
@@ -103,6 +104,10 @@ private:
   std::unordered_map<std::uint32_t, std::string> early_slots_;     // filled before written
   std::unordered_map<std::uint32_t, std::string> oversize_slots_;  // filled, too long to write in place
   std::string slot_line_;
+  // Lines of the current file wait here and go to its stream in large writes (one fwrite a line
+  // cost more than the rest of the hand-off). Drained before anything else touches a stream.
+  std::vector<char> buffer_;
+  std::size_t buffered_ = 0;
 };
 
 }  // namespace postproc

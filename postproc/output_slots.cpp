@@ -55,6 +55,7 @@ void OutputFiles::fill_slot(std::uint32_t id, std::string_view text) {
     early_slots_.emplace(id, std::string(text));
     return;
   }
+  drain();  // the line may still be in the buffer
   std::vector<SlotLocation> locations = std::move(it->second);
   open_slots_.erase(it);
   if (!slot::fits(text)) {  // the marker stays; the final pass writes the text

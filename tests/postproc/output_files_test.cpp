@@ -152,3 +152,37 @@ TEST_F(OutputFilesTest, StreamOutputNamesFilesOnlyWhenThereAreSeveral) {
 }
 
 }  // namespace
+
+namespace {
+
+// Lines are buffered and written in large blocks: lines longer than the buffer, many lines across
+// its end, switches between files and copies in between keep their order and bytes (CR LF too).
+TEST_F(OutputFilesTest, BufferedLinesKeepTheirOrderAcrossFilesAndCopies) {
+  OutputFiles out(dir, OutputFiles::LineEnd::CRLF);
+  out.set_main_path(dir / "MAIN.TAP");
+  std::string main_expected, sub_expected;
+  const std::string long_line(200'000, 'x');
+  auto main_line = [&](const std::string& text) {
+    out.write_line(text);
+    main_expected += text + "\r\n";
+  };
+  for (int i = 0; i < 5000; ++i) main_line("N" + std::to_string(i) + " G1 X" + std::to_string(i * 3));
+  main_line(long_line);
+  out.execute({Verb::Open, "SUB.SPF"});
+  for (int i = 0; i < 3000; ++i) {
+    out.write_line("sub " + std::to_string(i));
+    sub_expected += "sub " + std::to_string(i) + "\r\n";
+  }
+  out.execute({Verb::Close, "SUB.SPF"});
+  main_line("after");
+  out.execute({Verb::Copy, "SUB.SPF"});
+  main_expected += sub_expected;
+  main_line(long_line);
+  main_line("");
+  main_line("%");
+  out.commit();
+  EXPECT_EQ(slurp(dir / "MAIN.TAP"), main_expected);
+  EXPECT_EQ(slurp(dir / "SUB.SPF"), sub_expected);
+}
+
+}  // namespace
