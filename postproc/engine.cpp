@@ -12,10 +12,11 @@
 
 #include "gppl/gppl.hpp"
 #include "postproc/directive.hpp"
+#include "postproc/engine_sink.hpp"
 #include "postproc/enumerations.hpp"
 #include "postproc/host_variables.hpp"
 #include "postproc/line_numbers.hpp"
-#include "postproc/parameter_table.hpp"
+#include "postproc/parameter_binding.hpp"
 #include "postproc/structure.hpp"
 #include "toolpath/prefetch.hpp"
 #include "toolpath/short_text.hpp"
@@ -54,87 +55,6 @@ struct TransparentHash {
   std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
 };
 
-// Receives the post's finished lines: executes directives, writes the rest, tells the observer.
-class Sink final : public gppl::OutputSink {
-public:
-  Sink(OutputFiles& files, LineObserver* observer) : files_(files), observer_(observer) {}
-
-  void write_line(std::string_view line, const gppl::LineOrigin& origin) override {
-    std::size_t first = 0;  // a directive may be indented (find_first_not_of costs a memchr per character)
-    while (first < line.size() && (line[first] == ' ' || line[first] == '\t')) ++first;
-    bool maybe_directive = first < line.size() && line[first] == '!';
-    std::optional<Directive> directive = maybe_directive ? parse_directive(line) : std::nullopt;
-    if (observer_) {
-      // The line was started by the command that flushed the line before it (nb and nl flush the
-      // open line and open the next one), unless this command already flushed one.
-      bool own = wrote_in_command_;
-      file_name_ = files_.current_name();
-      LineEvent e{file_name_, line, directive.has_value(), files_.current_is_main(),
-                  {own ? command_index : opener_index_, own ? command_name : std::string_view(opener_name_),
-                   origin.procedure, origin.source_line}};
-      observer_->on_line(e);
-      opener_index_ = command_index;
-      opener_name_ = command_name;
-      wrote_in_command_ = true;
-    }
-    if (directive) {
-      if (observer_ && directive->verb == Directive::Verb::Copy) {
-        // The copied text becomes lines of the current file, attributed to the command that copies.
-        LineEvent copied{file_name_, {}, false, files_.current_is_main(),
-                         {command_index, command_name, origin.procedure, origin.source_line}};
-        files_.execute(*directive, [&](std::string_view text) {
-          copied.text = text;
-          observer_->on_line(copied);
-          ++lines;
-        });
-      } else {
-        files_.execute(*directive);
-      }
-    } else {
-      files_.write_line(line);
-      ++lines;
-    }
-  }
-
-  // Called when a command starts (lines are attributed to the command that started them).
-  void begin_command(std::size_t index, std::string_view name) {
-    command_index = index;
-    command_name = name;
-    wrote_in_command_ = false;
-    if (opener_name_.empty()) {
-      opener_index_ = index;
-      opener_name_ = name;
-    }
-  }
-
-  // start_line/end_line: the interpreter's structure hooks (called only for posts that use them).
-  void block_numbered(std::int64_t number) override { line_numbers->block_numbered(number); }
-  void procedure_boundary(gppl::ProcedureId id, bool entering) override { line_numbers->procedure_boundary(id, entering); }
-  void line_function(gppl::LineFunction which, std::string_view format, const gppl::Position& item,
-                     std::string& out) override {
-    line_numbers->line_function(which, format, item, out);
-  }
-  LineNumbers* line_numbers = nullptr;
-
-  // After the last command: the lines still open belong to the command that started them.
-  void end_commands() {
-    command_name = {};
-    wrote_in_command_ = false;
-  }
-
-  std::size_t command_index = 0;
-  std::string_view command_name;
-  std::size_t lines = 0;
-
-private:
-  bool wrote_in_command_ = false;
-  std::size_t opener_index_ = 0;
-  std::string opener_name_;
-  OutputFiles& files_;
-  LineObserver* observer_;
-  std::string file_name_;
-};
-
 std::string default_main_name(const std::string& g_file_name, const std::string& extension) {
   std::string name = g_file_name;
   bool has_extension = std::filesystem::path(name).has_extension();
@@ -153,6 +73,7 @@ public:
         sink_(files, options.observer),
         uses_line_functions_(gppl::uses_line_functions(*program)),
         interpreter_(std::move(program), sink_),
+        binding_(interpreter_, enums_),
         line_numbers_(interpreter_, files, options.observer, [this] {
           return sink_.command_name.empty() ? std::string()
                                             : fmt::format("command #{} {}", sink_.command_index, sink_.command_name);
@@ -165,6 +86,8 @@ public:
     prev_command_ = interpreter_.find_variable("prev_command");
     current_command_ = interpreter_.find_variable("current_command");
     next_command_ = interpreter_.find_variable("next_command");
+    if (prev_command_ && current_command_ && next_command_)
+      command_names_ = std::array<gppl::VariableId, 3>{*prev_command_, *current_command_, *next_command_};
     for (const auto* cycle : engine.machine().records("drill_type"))
       for (const auto& p : cycle->params) drill_parameters_.push_back(p);
     // PRP external variables start with their declared value, or inactive until a command sets them.
@@ -172,7 +95,7 @@ public:
       auto id = interpreter_.find_variable(v.name);
       if (!id) continue;
       if (v.initial)
-        interpreter_.assign(*id, convert(*v.initial, v.type == prp::VarType::String));
+        interpreter_.assign(*id, binding_.convert(*v.initial, v.type == prp::VarType::String));
       else
         interpreter_.set_active(*id, false);
     }
@@ -225,27 +148,16 @@ public:
   }
 
 private:
-  struct Slot {
-    std::optional<gppl::VariableId> id;
-    bool is_string = false;
-  };
-  // What the engine needs to know about a command name, looked up once per name. The slots of its
-  // parameters are remembered by position: a command name's parameters come in the same order
-  // command after command, so one string comparison usually replaces a name lookup.
-  struct Bound {  // the parameter at one position of a command name
-    std::string name;
-    Slot slot;
-    std::string enum_word;  // the last enumeration word seen here, and its code
-    std::int64_t enum_code = 0;
-  };
+  // What the engine needs to know about a command name, looked up once per name.
   struct CommandInfo {
     std::optional<gppl::ProcedureId> procedure;
-    std::vector<Bound> slots;  // by parameter position
+    ParameterBinding::Positions positions;  // parameters outside the catalogue, by position
     // What execute() does besides assigning, decided once per name instead of by name tests.
     bool start_of_file = false;
     bool starts_body = false;
     bool calls_subroutine = false;
     bool drill = false;
+    bool structural = false;  // ProgramStructure::before() has something to do
   };
 
   template <class F>
@@ -281,32 +193,6 @@ private:
     files_.set_main_path(options_.main_path ? options_.main_path(default_name) : std::filesystem::path(default_name));
   }
 
-  const Slot& slot(std::string_view name) {
-    auto it = slots_.find(name);
-    if (it != slots_.end()) return it->second;
-    Slot s;
-    s.id = interpreter_.find_variable(name);
-    if (const ParameterSpec* p = find_parameter(name))
-      s.is_string = p->kind == ParameterKind::String;
-    else if (s.id)
-      s.is_string = interpreter_.value(*s.id).type == gppl::Type::String;
-    return slots_.emplace(std::string(name), s).first->second;
-  }
-
-  // A PRP value as a post value (start-up only; commands go through assign() below).
-  gppl::Value convert(const toolpath::Value& v, bool to_string) {
-    switch (v.kind) {
-      case toolpath::ValueKind::Integer: return gppl::Value::of_integer(v.integer);
-      case toolpath::ValueKind::Numeric: return gppl::Value::of_numeric(v.numeric);
-      case toolpath::ValueKind::Logical: return gppl::Value::of_logical(v.logical);
-      case toolpath::ValueKind::String: break;
-      case toolpath::ValueKind::Enum:
-        if (!to_string) return gppl::Value::of_integer(enums_.code(v.text));
-        break;
-    }
-    return gppl::Value::of_string(v.text);
-  }
-
   // The command names seen last come first (a job alternates a few names: @line, @arc, ...).
   CommandInfo& info(std::string_view name) {
     for (auto& [seen, found] : recent_)
@@ -320,6 +206,7 @@ private:
       made.starts_body = ProgramStructure::starts_body(probe);
       made.calls_subroutine = ProgramStructure::calls_subroutine(probe);
       made.drill = iequals(name, "@drill");
+      made.structural = ProgramStructure::concerns(probe);
       it = commands_.emplace(std::string(name), std::move(made)).first;
     }
     std::move_backward(recent_.begin(), recent_.end() - 1, recent_.end());
@@ -327,51 +214,15 @@ private:
     return it->second;
   }
 
-  // The binding of parameter number `position` of a command, remembered per command name.
-  Bound& bound_at(CommandInfo& info, std::size_t position, std::string_view name) {
-    if (position < info.slots.size() && toolpath::same_short_text(info.slots[position].name, name)) return info.slots[position];
-    if (position >= info.slots.size()) info.slots.resize(position + 1);
-    info.slots[position] = Bound{std::string(name), slot(name), {}, 0};
-    return info.slots[position];
-  }
-
-  static gppl::ChangeOverride change_override(toolpath::ChangeFlag flag) {
-    switch (flag) {
-      case toolpath::ChangeFlag::Changed: return gppl::ChangeOverride::ForceChanged;
-      case toolpath::ChangeFlag::Unchanged: return gppl::ChangeOverride::ForceUnchanged;
-      case toolpath::ChangeFlag::None: break;
-    }
-    return gppl::ChangeOverride::Compute;
-  }
-
   void set_string(const std::optional<gppl::VariableId>& id, std::string_view text) {
     if (id) interpreter_.assign_string(*id, text);
-  }
-
-  // A parameter into its post variable, converted as convert() would, without building a Value.
-  void assign(Bound& b, const toolpath::Value& v) {
-    const gppl::VariableId id = *b.slot.id;
-    const gppl::ChangeOverride change = change_override(v.flag);
-    switch (v.kind) {
-      case toolpath::ValueKind::Integer: return interpreter_.assign_integer(id, v.integer, change);
-      case toolpath::ValueKind::Numeric: return interpreter_.assign_numeric(id, v.numeric, change);
-      case toolpath::ValueKind::Logical: return interpreter_.assign_logical(id, v.logical, change);
-      case toolpath::ValueKind::String: return interpreter_.assign_string(id, v.text, change);
-      case toolpath::ValueKind::Enum:
-        if (b.slot.is_string) return interpreter_.assign_string(id, v.text, change);
-        if (b.enum_word.empty() || !iequals(b.enum_word, v.text)) {  // words are looked up without case
-          b.enum_code = enums_.code(v.text);
-          b.enum_word = v.text;
-        }
-        return interpreter_.assign_integer(id, b.enum_code, change);
-    }
   }
 
   // Optional parameters a command did not supply are inactive (gppl-language.md 1.2).
   void deactivate_missing(const toolpath::Command& command, const CommandInfo& info) {
     auto deactivate = [&](std::string_view name) {
       if (command.find(name)) return;
-      if (const Slot& s = slot(name); s.id) interpreter_.set_active(*s.id, false);
+      if (const ParameterBinding::Slot& s = binding_.slot(name); s.id) interpreter_.set_active(*s.id, false);
     };
     if (info.calls_subroutine) {
       for (std::string_view name : {"message", "parm1", "parm2", "parm3"}) deactivate(name);
@@ -382,21 +233,22 @@ private:
 
   void execute(toolpath::Command& command, std::string_view previous, std::string_view next, RunSummary& summary) {
     CommandInfo& command_info = info(command.name);
-    structure_.before(command);
+    if (command_info.structural) structure_.before(command);
     if (command_info.start_of_file) start_of_file(command);
     if (options_.posted) options_.posted(command);
     bool reset = engine_.options().reset_modal_memory_at_subroutines;
     if (reset && command_info.starts_body) interpreter_.reset_change_memory();
 
-    for (std::size_t i = 0; i < command.parameters.size(); ++i) {
-      const toolpath::Parameter& p = command.parameters[i];
-      Bound& b = bound_at(command_info, i, p.name);
-      if (b.slot.id) assign(b, p.value);
-    }
+    binding_.assign_all(command, command_info.positions);
     deactivate_missing(command, command_info);
-    set_string(prev_command_, previous);
-    set_string(current_command_, command.name);
-    set_string(next_command_, next);
+    if (command_names_) {
+      const std::array<std::string_view, 3> names{previous, command.name, next};
+      interpreter_.assign_strings(*command_names_, names);
+    } else {
+      set_string(prev_command_, previous);
+      set_string(current_command_, command.name);
+      set_string(next_command_, next);
+    }
 
     if (!command_info.procedure) {
       ++summary.skipped;
@@ -446,14 +298,15 @@ private:
   const RunOptions& options_;
   OutputFiles& files_;
   Enumerations enums_;
-  Sink sink_;
+  EngineSink sink_;
   bool uses_line_functions_;
   gppl::Interpreter interpreter_;
+  ParameterBinding binding_;
   LineNumbers line_numbers_;
   ProgramStructure structure_;
   std::optional<gppl::VariableId> prev_command_, current_command_, next_command_;
+  std::optional<std::array<gppl::VariableId, 3>> command_names_;  // all three: assigned in one call
   std::vector<std::string> drill_parameters_;
-  std::unordered_map<std::string, Slot, TransparentHash, std::equal_to<>> slots_;
   std::unordered_map<std::string, CommandInfo, TransparentHash, std::equal_to<>> commands_;
   std::array<std::pair<std::string_view, CommandInfo*>, 4> recent_{};  // names point into commands_
 };

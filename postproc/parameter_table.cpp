@@ -3,11 +3,13 @@
 // resolved as follows: `safety` is numeric (one table says integer, "sic"); `semi_finish` is logical
 // (typed integer, holds TRUE/FALSE); `msg` is a string; `drill_type` is an integer code (the PRP's
 // cycle names are enumeration constants). Arrays (`call_prms<<i>>`, `chng_cond<<3,n>>`) and the
-// functions `start_line`/`end_line` are not variables and are not listed.
+// functions `start_line`/`end_line` are not variables and are not listed. The coordinate-set
+// variants (xhpos, ytonext, ...) are in parameter_table_sets.cpp.
 #include "postproc/parameter_table.hpp"
 
 #include <algorithm>
 #include <iterator>
+#include <vector>
 
 #include "toolpath/value.hpp"
 
@@ -306,52 +308,10 @@ constexpr ParameterSpec kParameters[] = {
     {"x_angle_const_z_dir", Kind::Enum, "@home_data"},
     {"xcenter", Kind::Numeric, "@arc @arc4x_cartesian @arc_5x @wc_arc"},
     {"xcenter_rel", Kind::Numeric, "@arc @arc4x_cartesian @arc_5x @wc_arc"},
-    {"xhcenter", Kind::Numeric, "@arc"},
-    {"xhnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"xhnext_start_tool_level", Kind::Numeric, "@rotate_to_plane"},
-    {"xhnext_tool_z_level", Kind::Numeric, "@rotate_to_plane"},
     {"xhome", Kind::Numeric, "@change_ref_point"},
-    {"xhpos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"xhspos", Kind::Numeric, "@drill_point"},
-    {"xhstart", Kind::Numeric, "@arc"},
-    {"xhupos", Kind::Numeric, "@drill_point"},
-    {"xlcenter", Kind::Numeric, "@arc"},
-    {"xlnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"xlpos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"xlspos", Kind::Numeric, "@drill_point"},
-    {"xlstart", Kind::Numeric, "@arc"},
-    {"xlupos", Kind::Numeric, "@drill_point"},
-    {"xmcenter", Kind::Numeric, "@arc"},
-    {"xmcenter_rel", Kind::Numeric, "@arc"},
-    {"xmnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"xmnext_start_tool_level", Kind::Numeric, "@rotate_to_plane"},
-    {"xmnext_tool_z_level", Kind::Numeric, "@rotate_to_plane"},
-    {"xmpos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"xmspos", Kind::Numeric, "@drill_point"},
-    {"xmstart", Kind::Numeric, "@arc"},
-    {"xmupos", Kind::Numeric, "@drill_point"},
     {"xnext", Kind::Numeric, "@call_proc @change_tool @fourth_axis @start_of_job @turn_change_tool"},
-    {"xocenter", Kind::Numeric, "@arc"},
-    {"xocenter_rel", Kind::Numeric, "@arc"},
-    {"xonext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"xonext_start_tool_level", Kind::Numeric, "@rotate_to_plane"},
-    {"xonext_tool_z_level", Kind::Numeric, "@rotate_to_plane"},
-    {"xopos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"xospos", Kind::Numeric, "@drill_point"},
-    {"xostart", Kind::Numeric, "@arc"},
-    {"xoupos", Kind::Numeric, "@drill_point"},
     {"xpos", Kind::Numeric, "@arc @arc4x_cartesian @arc_5x @drill @drill4x_cartesian @drill4x_pnt @drill_point @end_program @line @line4x_cartesian @line_4x @line_5x @line_on @move4x_cartesian @move_4x @move_5x @rapid_move @start_program @wc_arc @wc_move"},
-    {"xtcenter", Kind::Numeric, "@arc"},
-    {"xtnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"xtocenter", Kind::Numeric, "@arc"},
-    {"xtonext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
     {"xtool", Kind::Numeric, "@change_tool @turn_change_tool"},
-    {"xtopos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"xtostart", Kind::Numeric, "@arc"},
-    {"xtpos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"xtspos", Kind::Numeric, "@drill_point"},
-    {"xtstart", Kind::Numeric, "@arc"},
-    {"xtupos", Kind::Numeric, "@drill_point"},
     {"xy_abs", Kind::Logical, "@wc_abs_rel"},
     {"y_angle_const_x", Kind::Numeric, "@home_data"},
     {"y_angle_const_x_dir", Kind::Enum, "@home_data"},
@@ -359,103 +319,21 @@ constexpr ParameterSpec kParameters[] = {
     {"y_angle_const_z_dir", Kind::Enum, "@home_data"},
     {"ycenter", Kind::Numeric, "@arc @arc4x_cartesian @arc_5x @wc_arc"},
     {"ycenter_rel", Kind::Numeric, "@arc @arc4x_cartesian @arc_5x @wc_arc"},
-    {"yhcenter", Kind::Numeric, "@arc"},
-    {"yhnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"yhnext_start_tool_level", Kind::Numeric, "@rotate_to_plane"},
-    {"yhnext_tool_z_level", Kind::Numeric, "@rotate_to_plane"},
     {"yhome", Kind::Numeric, "@change_ref_point"},
-    {"yhpos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"yhspos", Kind::Numeric, "@drill_point"},
-    {"yhstart", Kind::Numeric, "@arc"},
-    {"yhupos", Kind::Numeric, "@drill_point"},
-    {"ylcenter", Kind::Numeric, "@arc"},
-    {"ylnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"ylpos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"ylspos", Kind::Numeric, "@drill_point"},
-    {"ylstart", Kind::Numeric, "@arc"},
-    {"ylupos", Kind::Numeric, "@drill_point"},
-    {"ymcenter", Kind::Numeric, "@arc"},
-    {"ymcenter_rel", Kind::Numeric, "@arc"},
-    {"ymnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"ymnext_start_tool_level", Kind::Numeric, "@rotate_to_plane"},
-    {"ymnext_tool_z_level", Kind::Numeric, "@rotate_to_plane"},
-    {"ympos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"ymspos", Kind::Numeric, "@drill_point"},
-    {"ymstart", Kind::Numeric, "@arc"},
-    {"ymupos", Kind::Numeric, "@drill_point"},
     {"ynext", Kind::Numeric, "@call_proc @change_tool @fourth_axis @start_of_job"},
-    {"yocenter", Kind::Numeric, "@arc"},
-    {"yocenter_rel", Kind::Numeric, "@arc"},
-    {"yonext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"yonext_start_tool_level", Kind::Numeric, "@rotate_to_plane"},
-    {"yonext_tool_z_level", Kind::Numeric, "@rotate_to_plane"},
-    {"yopos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"yospos", Kind::Numeric, "@drill_point"},
-    {"yostart", Kind::Numeric, "@arc"},
-    {"youpos", Kind::Numeric, "@drill_point"},
     {"ypos", Kind::Numeric, "@arc @arc_5x @drill @drill4x_pnt @drill_point @end_program @line @line4x_cartesian @line_4x @line_5x @line_on @move4x_cartesian @move_4x @move_5x @rapid_move @start_program @wc_arc @wc_move"},
-    {"ytcenter", Kind::Numeric, "@arc"},
-    {"ytnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"ytocenter", Kind::Numeric, "@arc"},
-    {"ytonext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
     {"ytool", Kind::Numeric, "@change_tool"},
-    {"ytopos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"ytostart", Kind::Numeric, "@arc"},
-    {"ytpos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"ytspos", Kind::Numeric, "@drill_point"},
-    {"ytstart", Kind::Numeric, "@arc"},
-    {"ytupos", Kind::Numeric, "@drill_point"},
     {"z_angle_const_x", Kind::Numeric, "@home_data"},
     {"z_angle_const_x_dir", Kind::Enum, "@home_data"},
     {"z_angle_const_y", Kind::Numeric, "@home_data"},
     {"z_angle_const_y_dir", Kind::Enum, "@home_data"},
     {"z_feed", Kind::Numeric, "@start_of_job"},
     {"zero_plane", Kind::Numeric, "@home_data @wc_move"},
-    {"zhcenter", Kind::Numeric, "@arc"},
-    {"zhnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"zhnext_start_tool_level", Kind::Numeric, "@rotate_to_plane"},
-    {"zhnext_tool_z_level", Kind::Numeric, "@rotate_to_plane"},
     {"zhome", Kind::Numeric, "@change_ref_point"},
-    {"zhpos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"zhspos", Kind::Numeric, "@drill_point"},
-    {"zhstart", Kind::Numeric, "@arc"},
-    {"zhupos", Kind::Numeric, "@drill_point"},
-    {"zlcenter", Kind::Numeric, "@arc"},
-    {"zlnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"zlpos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"zlspos", Kind::Numeric, "@drill_point"},
-    {"zlstart", Kind::Numeric, "@arc"},
-    {"zlupos", Kind::Numeric, "@drill_point"},
-    {"zmcenter", Kind::Numeric, "@arc"},
-    {"zmnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"zmnext_start_tool_level", Kind::Numeric, "@rotate_to_plane"},
-    {"zmnext_tool_z_level", Kind::Numeric, "@rotate_to_plane"},
-    {"zmpos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"zmspos", Kind::Numeric, "@drill_point"},
-    {"zmstart", Kind::Numeric, "@arc"},
-    {"zmupos", Kind::Numeric, "@drill_point"},
     {"znext", Kind::Numeric, "@call_proc @change_tool @start_of_job @turn_change_tool"},
-    {"zocenter", Kind::Numeric, "@arc"},
-    {"zonext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"zonext_start_tool_level", Kind::Numeric, "@rotate_to_plane"},
-    {"zonext_tool_z_level", Kind::Numeric, "@rotate_to_plane"},
-    {"zopos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"zospos", Kind::Numeric, "@drill_point"},
-    {"zostart", Kind::Numeric, "@arc"},
-    {"zoupos", Kind::Numeric, "@drill_point"},
     {"zpos", Kind::Numeric, "@arc @arc4x_cartesian @arc_5x @drill @drill4x_pnt @drill_point @end_program @line @line4x_cartesian @line_4x @line_5x @line_on @move4x_cartesian @move_4x @move_5x @rapid_move @start_program @wc_arc @wc_finish_info"},
     {"zstart", Kind::Numeric, "@arc4x_cartesian @arc_5x"},
-    {"ztcenter", Kind::Numeric, "@arc"},
-    {"ztnext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
-    {"ztocenter", Kind::Numeric, "@arc"},
-    {"ztonext", Kind::Numeric, "@call_proc @change_tool @start_of_job"},
     {"ztool", Kind::Numeric, "@change_tool @turn_change_tool"},
-    {"ztopos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"ztostart", Kind::Numeric, "@arc"},
-    {"ztpos", Kind::Numeric, "@arc @arc_5x @drill @drill_point @line @line_5x @move_5x @rapid_move"},
-    {"ztspos", Kind::Numeric, "@drill_point"},
-    {"ztstart", Kind::Numeric, "@arc"},
-    {"ztupos", Kind::Numeric, "@drill_point"},
 };
 
 bool iless(std::string_view a, std::string_view b) {
@@ -465,14 +343,27 @@ bool iless(std::string_view a, std::string_view b) {
   });
 }
 
+// Both tables as one, sorted by name: built once, on first use.
+const std::vector<ParameterSpec>& all_parameters() {
+  static const std::vector<ParameterSpec> all = [] {
+    std::vector<ParameterSpec> v(std::begin(kParameters), std::end(kParameters));
+    const auto sets = detail::coordinate_set_parameters();
+    v.insert(v.end(), sets.begin(), sets.end());
+    std::sort(v.begin(), v.end(), [](const ParameterSpec& x, const ParameterSpec& y) { return iless(x.name, y.name); });
+    return v;
+  }();
+  return all;
+}
+
 }  // namespace
 
-std::span<const ParameterSpec> parameter_table() { return kParameters; }
+std::span<const ParameterSpec> parameter_table() { return all_parameters(); }
 
 const ParameterSpec* find_parameter(std::string_view name) {
-  auto it = std::lower_bound(std::begin(kParameters), std::end(kParameters), name,
+  const auto& all = all_parameters();
+  auto it = std::lower_bound(all.begin(), all.end(), name,
                              [](const ParameterSpec& p, std::string_view n) { return iless(p.name, n); });
-  if (it == std::end(kParameters) || !toolpath::iequals(it->name, name)) return nullptr;
+  if (it == all.end() || !toolpath::iequals(it->name, name)) return nullptr;
   return &*it;
 }
 

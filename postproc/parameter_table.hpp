@@ -24,4 +24,8 @@ std::span<const ParameterSpec> parameter_table();
 // Case-insensitive lookup; nullptr when the name is not documented.
 const ParameterSpec* find_parameter(std::string_view name);
 
+namespace detail {
+std::span<const ParameterSpec> coordinate_set_parameters();  // part of the table (parameter_table_sets.cpp)
+}
+
 }  // namespace postproc

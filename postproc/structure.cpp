@@ -24,6 +24,11 @@ bool ProgramStructure::calls_subroutine(const toolpath::Command& c) {
   return iequals(c.name, "@call_proc") || iequals(c.name, "@call_prms");
 }
 
+bool ProgramStructure::concerns(const toolpath::Command& c) {
+  return calls_subroutine(c) || starts_body(c) || iequals(c.name, "@end_proc") || iequals(c.name, "@turn_endproc") ||
+         iequals(c.name, "@loop") || iequals(c.name, "@end_loop");
+}
+
 void ProgramStructure::before(toolpath::Command& c) {
   if (calls_subroutine(c)) {
     if (procs_.empty()) job_labels_.insert(integer_of(c, "label", 0));

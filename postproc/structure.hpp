@@ -16,6 +16,8 @@ class ProgramStructure {
 public:
   // Call before the command's parameters are assigned: completes the command where it can.
   void before(toolpath::Command& command);
+  // False for a command that before() leaves alone and that changes nothing it tracks (most of them).
+  static bool concerns(const toolpath::Command& command);
 
   // True inside a subroutine body (between @proc and its @end_proc).
   bool in_subroutine() const { return !procs_.empty(); }

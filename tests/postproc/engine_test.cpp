@@ -69,6 +69,26 @@ TEST_F(EngineTest, ParametersChangeFlagsAndCommandNames) {
             "@tmatrix @line  X5.\n");
 }
 
+// A parameter reaches the variable of its name whatever its spelling and position: catalogue names
+// are bound by their interned key, other names by their position in the command, and both bindings
+// follow a command whose parameters come in another order. Enumeration words are compared without case.
+TEST_F(EngineTest, ParametersBindByNameWhateverTheirSpellingAndOrder) {
+  const std::string gpp =
+      "@init_post\n  xpos_f = '5.3'\n  ypos_f = '5.3'\nendp\n"
+      "@line\n  {nl, xpos, ' ', ypos, ' ', extra_a, ' ', extra_b}\n"
+      "  if side eq COMP_LEFT\n    {' L'}\n  else\n    {' R'}\n  endif\nendp\n";
+  const std::string trace =
+      "@line\nxpos : 1\nypos : 2\nextra_a : 7\nextra_b : 8\nside : COMP_LEFT\n"
+      "@line\nYPOS : 3\nXpos : 4\nextra_b : 9\nextra_a : 10\nside : comp_right\n"
+      "@line\nextra_a : 11\nside : comp_left\nxpos : 5\nextra_b : 12\nypos : 6\n"
+      "@line\nxpos : 5\nypos : 6\nEXTRA_A : 13\nextra_b : 14\nside : COMP_RIGHT\n";
+  EXPECT_EQ(post(gpp, trace),
+            "1. 2. 7 8 L\n"
+            "4. 3. 10 9 R\n"
+            "5. 6. 11 12 L\n"
+            "5. 6. 13 14 R\n");
+}
+
 // The PRP half follows the job's `inch_system`, read from @start_of_file before the filters run;
 // an explicit unit choice overrides it. dflt_start/dflt_end fill the positions the job leaves open.
 TEST_F(EngineTest, PrpHalfFollowsTheJobsUnitSystem) {
