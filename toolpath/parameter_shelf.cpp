@@ -2,7 +2,7 @@
 
 namespace toolpath {
 
-ParameterShelf::Label ParameterShelf::label_of(std::string_view name) {
+[[gnu::always_inline]] inline ParameterShelf::Label ParameterShelf::label_of(std::string_view name) {
   const std::size_t n = name.size();
   if (n == 0 || n > 16) return {};
   return {load_word(name, 0, n < 8 ? n : 8), n > 8 ? load_word(name, 8, n - 8) : 0, n};

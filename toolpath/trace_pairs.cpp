@@ -2,7 +2,8 @@
 // mostly numbers in pairs. The general rule (trace-format.md): an unquoted value runs to the
 // blanks before the next `name:`, or to the end of the line, and is parsed by parse_value. The
 // fast path below stores the common cases, a number or a bare word followed by blanks and the
-// next `name:`, with one scan; tests/toolpath/trace_reader_inline_test.cpp holds it to the general rule.
+// next `name:`, with one scan; tests/toolpath/trace_reader_inline_test.cpp holds it to the
+// general rule.
 #include <cassert>
 #include <cstdint>
 #include <cstring>

@@ -48,7 +48,9 @@ private:
   std::string buffer_;           // raw bytes read from the stream
   std::size_t buffer_pos_ = 0;
   bool stream_done_ = false;
-  std::string_view line_;        // the current line, without its line end: in buffer_ or carry_
+  // The current line, without its line end: in buffer_ or carry_, so the byte after it is '\n',
+  // '\r' or '\0' (the pair scans rely on that).
+  std::string_view line_;
   std::string carry_;            // a line cut by the end of a chunk, put together
   std::size_t line_number_ = 0;
   bool have_line_ = false;       // line_ holds a header not yet consumed
