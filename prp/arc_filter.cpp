@@ -15,17 +15,18 @@ using toolpath::geometry::Plane;
 
 namespace {
 
-// The parameters plan() reads, found in one pass over the arc's parameters (the first of each
-// name, as with Command::find).
+// The parameters the filter reads, found in one pass over a command's parameters (the first of
+// each name, as with Command::find): what plan() needs of an arc, the tool position and apos/bpos
+// it follows on every command, and whether a move names a set end point (for SetHistory).
 enum ArcField { kX, kY, kZ, kApos, kBpos, kXcenter, kYcenter, kXrel, kYrel, kZstart, kSize, kPlane, kDirection,
                 kPlaneM, kFieldCount };
 
 using toolpath::ParamKey;
 
-// Per key: the ArcField it is, or -1.
-constexpr auto kArcFields = [] {
-  KeyTable<std::int8_t> t{};
-  t.fill(-1);
+// Per key: 1 + its ArcField, kSetEndPoint for a set end point, 0 for anything else.
+constexpr std::uint8_t kSetEndPoint = kFieldCount + 1;
+constexpr auto kCodes = [] {
+  KeyTable<std::uint8_t> t{};
   const std::pair<ParamKey, ArcField> fields[] = {
       {ParamKey::xpos, kX},          {ParamKey::ypos, kY},
       {ParamKey::zpos, kZ},          {ParamKey::apos, kApos},
@@ -34,37 +35,32 @@ constexpr auto kArcFields = [] {
       {ParamKey::ycenter_rel, kYrel}, {ParamKey::zstart, kZstart},
       {ParamKey::arc_size, kSize},   {ParamKey::arc_plane, kPlane},
       {ParamKey::arc_direction, kDirection}, {ParamKey::arc_plane_m, kPlaneM}};
-  for (auto [key, field] : fields) at(t, key) = static_cast<std::int8_t>(field);
+  for (auto [key, field] : fields) at(t, key) = static_cast<std::uint8_t>(1 + field);
+  for (ParamKey key : kSetEndPoints) at(t, key) = kSetEndPoint;
   return t;
 }();
 
-// Per key, what track() follows: 0 nothing, 1..5 xpos ypos zpos apos bpos.
-constexpr auto kTracked = [] {
-  KeyTable<std::uint8_t> t{};
-  at(t, ParamKey::xpos) = 1;
-  at(t, ParamKey::ypos) = 2;
-  at(t, ParamKey::zpos) = 3;
-  at(t, ParamKey::apos) = 4;
-  at(t, ParamKey::bpos) = 5;
-  return t;
-}();
+}  // namespace
 
-struct ArcFields {
-  explicit ArcFields(const toolpath::Command& c) {
-    for (const toolpath::Parameter& p : c.parameters)
-      if (const int f = at(kArcFields, p.key); f >= 0 && !values[f]) values[f] = &p.value;
+struct ArcFilter::Fields {
+  explicit Fields(const toolpath::Command& c) {
+    for (const toolpath::Parameter& p : c.parameters) {
+      const int code = at(kCodes, p.key);
+      if (code == 0) continue;
+      if (code == kSetEndPoint) names_set_end_point = true;
+      else if (!values[code - 1]) values[code - 1] = &p.value;
+    }
   }
   const toolpath::Value* find(ArcField f) const { return values[f]; }
   // As prp::number().
   std::optional<double> number(ArcField f) const {
     const toolpath::Value* v = values[f];
-    if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return std::nullopt;
+    if (!v || !is_number(*v)) return std::nullopt;
     return number_of(*v);
   }
   const toolpath::Value* values[kFieldCount] = {};
+  bool names_set_end_point = false;
 };
-
-}  // namespace
 
 ArcSettings ArcSettings::from(const MachineParameters& p) {
   ArcSettings s;
@@ -102,8 +98,10 @@ bool ArcFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
     return true;
   }
   if (!input_.next(out, kind)) return false;
-  if (out.is_stream_command() && (kind == CommandKind::arc || kind == CommandKind::arc_5x)) {
-    plan(out, kind);
+  if (!out.is_stream_command()) return true;  // followed by nothing here, the set history included
+  const Fields f(out);
+  if (kind == CommandKind::arc || kind == CommandKind::arc_5x) {
+    plan(out, kind, f);
     if (pieces_ > 0) {
       sets_.prepare(out, arc_, history_);
       history_.observe(out, kind);
@@ -112,38 +110,27 @@ bool ArcFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
       return true;
     }
   }
-  track(out, kind);
+  follow(out, kind, f);
   return true;
 }
 
-// One pass over the parameters for the tool position (moves only, as ToolPosition::update) and
-// for apos/bpos (any stream command); the first of each name counts, as with number().
-void ArcFilter::track(const toolpath::Command& out, CommandKind kind) {
-  history_.observe(out, kind);
-  if (!out.is_stream_command()) return;
-  const unsigned wanted = has(kMovesTool, kind) ? 0x1fu : 0x18u;  // bits: x y z a b
-  unsigned seen = 0;
-  for (const toolpath::Parameter& p : out.parameters) {
-    const int code = at(kTracked, p.key);
-    if (code == 0) continue;
-    const unsigned bit = 1u << (code - 1);
-    if (!(wanted & bit) || (seen & bit)) continue;
-    seen |= bit;
-    if (is_number(p.value)) {
-      const double x = number_of(p.value);
-      if (code <= 3) position_.set_axis(code - 1, x);
-      else (code == 4 ? apos_ : bpos_) = x;
-    }
-    if (seen == wanted) break;
-  }
+// Follows a stream command: the tool position (moves only, as ToolPosition::update), apos/bpos
+// (any command) and the kinematic-set history.
+void ArcFilter::follow(const toolpath::Command& out, CommandKind kind, const Fields& f) {
+  const bool moves = has(kMovesTool, kind);
+  if (!moves || f.names_set_end_point) history_.observe(out, kind);
+  if (moves)
+    for (int i = 0; i < 3; ++i)
+      if (const toolpath::Value* v = f.values[kX + i]; v && is_number(*v)) position_.set_axis(i, number_of(*v));
+  if (const toolpath::Value* v = f.values[kApos]; v && is_number(*v)) apos_ = number_of(*v);
+  if (const toolpath::Value* v = f.values[kBpos]; v && is_number(*v)) bpos_ = number_of(*v);
 }
 
 // Decides what replaces the arc (spec 3.2 process_arc); pieces_ stays 0 when it passes unchanged.
-void ArcFilter::plan(const toolpath::Command& c, CommandKind kind) {
+void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Fields& f) {
   piece_ = pieces_ = chords_ = 0;
   cuts_.clear();
   five_axis_ = kind == CommandKind::arc_5x;
-  const ArcFields f(c);
   rotary_from_[0] = apos_;
   rotary_from_[1] = bpos_;
   rotary_to_[0] = f.number(kApos);
@@ -190,6 +177,12 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind) {
   start[a.normal] = zstart ? *zstart : position_.axis(a.normal).value_or(end[a.normal]);
   centre[a.normal] = start[a.normal];
 
+  bool tilted = false;  // in the machine's axes the arc lies in none of XY, YZ, ZX
+  if (const toolpath::Value* m = f.find(kPlaneM)) tilted = !toolpath::geometry::parse_plane(m->text);
+  if (!settings_.work_out_every_arc &&
+      arc_surely_passes(settings_, start, end, centre, plane, direction, five_axis_, tilted))
+    return;
+
   arc_ = toolpath::geometry::make_arc(start, end, centre, plane, direction, f.number(kSize));
   const ArcSettings& s = settings_;
   const bool helical = std::abs(arc_.rise()) > std::max(s.zero_value, 1e-9);
@@ -199,8 +192,6 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind) {
     chords_ = pieces_ = 1;  // one straight line to the end
     return;
   }
-  bool tilted = false;  // in the machine's axes the arc lies in none of XY, YZ, ZX
-  if (const toolpath::Value* m = f.find(kPlaneM)) tilted = !toolpath::geometry::parse_plane(m->text);
   if (!s.arc_exist || (helical && !s.arc_3d) || (!in_machine_plane && !s.zx_yz) ||
       (s.max_radius && arc_.radius > *s.max_radius) || (five_axis_ && !s.arc_5x) || (tilted && s.main_planes)) {
     chords_ = pieces_ = toolpath::geometry::chord_count(arc_, s.max_angle, s.max_chord);
@@ -226,6 +217,44 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind) {
 
 // Hands out the next piece and its kind: a chord is a @line (@line_5x), a smaller arc keeps the
 // original's name.
+// Told without make_arc's atan2, fmod and hypot. The switches that could change an arc are off, or settled by the exact expressions plan() uses;
+// the sweep and the radius are bounded from products of the coordinates. Their rounding errors
+// (a few units in the last place: 1e-13 degrees, 1e-15 of the radius) are far below the margins
+// (1e-9), and an arc near 0, 180 or 360 degrees, or of a radius below 1e-50 or above 1e50, is
+// worked out in full. NaN fails every comparison here, so it is worked out too.
+bool arc_surely_passes(const ArcSettings& s, const Eigen::Vector3d& start, const Eigen::Vector3d& end,
+                       const Eigen::Vector3d& centre, Plane plane, Direction direction, bool five_axis, bool tilted) {
+  if (!s.arc_exist || s.quadrants || (five_axis && !s.arc_5x) || (tilted && s.main_planes) ||
+      (plane != s.machine_plane && !s.zx_yz))
+    return false;
+  const auto a = toolpath::geometry::axes(plane);
+  if (!s.arc_3d && std::abs(end[a.normal] - start[a.normal]) > std::max(s.zero_value, 1e-9)) return false;  // helical
+  // In the arc plane, from the centre: u to the start, v to the end.
+  const double ux = start[a.first] - centre[a.first], uy = start[a.second] - centre[a.second];
+  const double vx = end[a.first] - centre[a.first], vy = end[a.second] - centre[a.second];
+  const double u2 = ux * ux + uy * uy, v2 = vx * vx + vy * vy;
+  if (!(u2 > 1e-100 && u2 < 1e100 && v2 > 1e-100 && v2 < 1e100)) return false;
+  const double n = std::sqrt(u2) * std::sqrt(v2);
+  // n sin(sweep): positive for a sweep below 180 degrees in the arc's direction.
+  const double turn = direction == Direction::CCW ? ux * vy - uy * vx : uy * vx - ux * vy;
+  constexpr double kMargin = 1e-9;
+  double low;  // the sweep is at least this (degrees)
+  if (turn > kMargin * n) {
+    // 0 < sweep < 180: at least 90 when the dot product is not positive, else at least its sine (radians).
+    low = ux * vx + uy * vy <= 0 ? 90.0 : turn / n * (180.0 / std::numbers::pi);
+  } else if (turn < -kMargin * n && s.gt_180) {
+    low = 180.0;  // 180 < sweep < 360, which only gt_180 = N would cut
+  } else {
+    return false;
+  }
+  low = low * (1 - kMargin) - kMargin;
+  if (!(low > s.eps_angle)) return false;                             // plan(): one line below eps_angle
+  const double radius = std::sqrt(u2);                                // hypot(ux, uy), within 1e-15
+  if (s.max_radius && !(radius * (1 + kMargin) <= *s.max_radius)) return false;  // chords above the limit
+  // length() is at least the radius times the sweep in radians (its helical part only adds).
+  return s.min_length <= 0 || radius * low * (std::numbers::pi / 180.0) * (1 - kMargin) > s.min_length;
+}
+
 void ArcFilter::emit(toolpath::Command& out, CommandKind& kind) {
   const int i = piece_++;
   const bool last = piece_ == pieces_;
@@ -262,7 +291,7 @@ void ArcFilter::emit(toolpath::Command& out, CommandKind& kind) {
     }
   }
   if (last) out.trace = original_.trace;  // the original post's output belongs to the whole arc
-  track(out, kind);
+  follow(out, kind, Fields(out));
 }
 
 }  // namespace prp

@@ -30,11 +30,19 @@ struct ArcSettings {
   double eps_angle = 0.0;     // smaller sweeps become one line
   double zero_value = 0.0;    // a rise below this is not helical
   bool limits_defaulted = false;  // neither arc_max_angle nor arc_max_chord is in the PRP
+  bool work_out_every_arc = false;  // tests: no arc_surely_passes() shortcut (same results, slower)
 
   static ArcSettings from(const MachineParameters& params);
   // True when no arc can be changed (every switch passes arcs through).
   bool passes_everything() const;
 };
+
+// True when the filter surely passes this arc unchanged (start, end and centre as the filter
+// completes them from the tool position; tilted: its arc_plane_m is none of XY, YZ, ZX); false
+// when not sure. The filter then skips working out the arc's angles, radius and length.
+bool arc_surely_passes(const ArcSettings& settings, const Eigen::Vector3d& start, const Eigen::Vector3d& end,
+                       const Eigen::Vector3d& centre, toolpath::geometry::Plane plane,
+                       toolpath::geometry::Direction direction, bool five_axis, bool tilted);
 
 class ArcFilter final : public KindSource {
 public:
@@ -42,9 +50,10 @@ public:
   bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
 private:
-  void plan(const toolpath::Command& arc, CommandKind kind);
+  struct Fields;  // what the filter reads of a command, found in one pass
+  void plan(const toolpath::Command& arc, CommandKind kind, const Fields& f);
   void emit(toolpath::Command& out, CommandKind& kind);
-  void track(const toolpath::Command& out, CommandKind kind);
+  void follow(const toolpath::Command& out, CommandKind kind, const Fields& f);
 
   KindedInput input_;
   ArcSettings settings_;

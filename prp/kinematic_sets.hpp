@@ -39,6 +39,14 @@ std::optional<SetCoordinate> classify_set_coordinate(std::string_view name);
 // The same by interned key, one table load (every set coordinate is a catalogue name).
 std::optional<SetCoordinate> classify_set_coordinate(toolpath::ParamKey key);
 
+// The end points of the sets (x?pos, y?pos, z?pos): what SetHistory::observe records of a move.
+inline constexpr toolpath::ParamKey kSetEndPoints[] = {
+    toolpath::ParamKey::xhpos,  toolpath::ParamKey::yhpos,  toolpath::ParamKey::zhpos,  toolpath::ParamKey::xmpos,
+    toolpath::ParamKey::ympos,  toolpath::ParamKey::zmpos,  toolpath::ParamKey::xopos,  toolpath::ParamKey::yopos,
+    toolpath::ParamKey::zopos,  toolpath::ParamKey::xlpos,  toolpath::ParamKey::ylpos,  toolpath::ParamKey::zlpos,
+    toolpath::ParamKey::xtpos,  toolpath::ParamKey::ytpos,  toolpath::ParamKey::ztpos,  toolpath::ParamKey::xtopos,
+    toolpath::ParamKey::ytopos, toolpath::ParamKey::ztopos};
+
 // Recent motion end points seen in pos and in each set, newest last (a few per set).
 class SetHistory {
 public:
@@ -46,7 +54,8 @@ public:
     Eigen::Vector3d pos, set;
   };
   // Motion commands add their end points; commands that may move the frame (a tool change, a new
-  // job, a plane rotation, a home) forget everything.
+  // job, a plane rotation, a home) forget everything. A move that names no set end point
+  // (kSetEndPoints) changes nothing.
   void observe(const toolpath::Command& c);
   void observe(const toolpath::Command& c, CommandKind kind);  // kind: command_kind(c), already known
   void add(int set, const Eigen::Vector3d& pos, const Eigen::Vector3d& in_set);

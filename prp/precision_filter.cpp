@@ -28,14 +28,35 @@ constexpr auto kIndex = [] {
   return t;
 }();
 
-double scale_of(const std::optional<int>& digits) { return digits ? std::pow(10.0, *digits) : 0.0; }
-
-double round_to(double v, double scale) {
-  double r = round_half_away(v * scale) / scale;
-  return r == 0.0 ? 0.0 : r;  // never -0
+std::optional<DecimalGrid> grid_of(const std::optional<int>& digits) {
+  if (!digits) return std::nullopt;
+  return DecimalGrid(*digits);
 }
 
 }  // namespace
+
+// Why a whole number v with |v| <= whole_limit_ rounds to itself (-0 to +0) under the general rule:
+// 10^digits is a double exactly for 0 <= digits <= 22, and whole_limit_ * 10^digits <= 2^53, so
+// v * 10^digits is a whole number of at most 2^53: a double, so the product is exact. Rounding a
+// whole number changes nothing, and dividing it by 10^digits gives v exactly, a double, so the
+// quotient is exact as well; the rule's last step makes -0 into +0. Any other value (a fraction,
+// a larger number, inf, NaN, or digits < 0, where 10^digits is not a double) takes the general rule.
+DecimalGrid::DecimalGrid(int digits) : scale_(std::pow(10.0, digits)), whole_limit_(-1.0) {
+  if (digits < 0 || digits > 22) return;
+  double exact = 1.0;
+  std::uint64_t power = 1;  // 10^digits while it stays below 2^53, else 0
+  for (int i = 0; i < digits; ++i) {
+    exact *= 10.0;  // exact up to 10^22
+    power = power != 0 && power * 10 <= (std::uint64_t{1} << 53) ? power * 10 : 0;
+  }
+  if (exact != scale_) return;  // pow() was not exact: no shortcut
+  whole_limit_ = power == 0 ? 0.0 : static_cast<double>((std::uint64_t{1} << 53) / power);
+}
+
+double DecimalGrid::round_general(double v) const {
+  const double r = round_half_away(v * scale_) / scale_;
+  return r == 0.0 ? 0.0 : r;  // never -0
+}
 
 double round_half_away(double y) {
   if (!(std::abs(y) < 4503599627370496.0)) return y;  // 2^52: already whole (or inf, NaN)
@@ -64,9 +85,9 @@ PrecisionSettings PrecisionSettings::from(const MachineParameters& p) {
 PrecisionFilter::PrecisionFilter(toolpath::CommandSource& input, PrecisionSettings settings)
     : input_(input),
       s_(settings),
-      movement_scale_(scale_of(s_.movement_digits)),
-      feed_scale_(scale_of(s_.feed_digits)),
-      spin_scale_(scale_of(s_.spin_digits)) {}
+      movement_(grid_of(s_.movement_digits)),
+      feed_(grid_of(s_.feed_digits)),
+      spin_(grid_of(s_.spin_digits)) {}
 
 // One pass over the parameters. For each one the steps run in the order of spec 3.1: snap to zero,
 // keep an axis that barely moved, round. Values already at the precision stay as they are (an
@@ -95,11 +116,11 @@ bool PrecisionFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) 
         auto last = sent_.axis(k);
         if (last && x != *last && std::abs(x - *last) < zero) set(*last);
       }
-      if (s_.movement_digits) set(round_to(x, movement_scale_));
-    } else if (k == kFeed && s_.feed_digits) {
-      set(round_to(x, feed_scale_));
-    } else if (k == kSpin && s_.spin_digits) {
-      set(round_to(x, spin_scale_));
+      if (movement_) set(movement_->round(x));
+    } else if (k == kFeed && feed_) {
+      set(feed_->round(x));
+    } else if (k == kSpin && spin_) {
+      set(spin_->round(x));
     }
     if (changed) v = toolpath::Value::make_numeric(x, v.flag);
     if (moves && k < 3) sent_.set_axis(k, x);  // where the tool is sent (ToolPosition::update, in this pass)

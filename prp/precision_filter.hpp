@@ -3,6 +3,8 @@
 // value; coordinates, feeds and spindle speeds are rounded to the PRP's digits.
 #pragma once
 
+#include <cmath>
+#include <cstdint>
 #include <optional>
 
 #include "prp/kind_source.hpp"
@@ -27,6 +29,23 @@ std::optional<int> digits_of(double movement_precision);
 // the zero it gives for -0.4 may be +0 where std::round gives -0 (rounding writes no -0 anyway).
 double round_half_away(double y);
 
+// Rounding to a number of decimals (spec 3.1): round_half_away(v * 10^digits) / 10^digits, never
+// -0. round() gives the general rule's result, bit for bit, for every double; whole numbers (most
+// coordinates, feeds and speeds) skip the arithmetic (see precision_filter.cpp for why that is exact).
+class DecimalGrid {
+public:
+  explicit DecimalGrid(int digits);
+  double round(double v) const {
+    if (std::abs(v) <= whole_limit_ && static_cast<double>(static_cast<std::int64_t>(v)) == v) return v == 0.0 ? 0.0 : v;
+    return round_general(v);
+  }
+  double round_general(double v) const;  // the rule as written
+
+private:
+  double scale_;        // 10^digits
+  double whole_limit_;  // whole numbers up to this stay as they are; -1: no shortcut
+};
+
 class PrecisionFilter final : public KindSource {
 public:
   PrecisionFilter(toolpath::CommandSource& input, PrecisionSettings settings);
@@ -35,7 +54,7 @@ public:
 private:
   KindedInput input_;
   PrecisionSettings s_;
-  double movement_scale_, feed_scale_, spin_scale_;  // 10^digits
+  std::optional<DecimalGrid> movement_, feed_, spin_;
   ToolPosition sent_;
 };
 

@@ -4,6 +4,8 @@
 // arcs whose sets cannot be derived.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -235,6 +237,20 @@ TEST(KinematicSets, WhatCannotBeDerivedIsAnError) {
   EXPECT_EQ(error_of(job),
             "command 2 (@arc): the arc's h coordinates are not a rigid image of its working-plane ones (start to "
             "centre 25.02 against 25, start to end 0 against 0): the pieces' h values cannot be derived");
+}
+
+// kSetEndPoints (what the arc filter looks for before asking SetHistory::observe) lists exactly
+// the catalogue names the spelled rule calls set end points.
+TEST(KinematicSets, SetEndPointsAreExactlyTheX_PosNames) {
+  std::vector<toolpath::ParamKey> spelled;
+  for (std::size_t k = 1; k <= toolpath::param_key_count; ++k) {
+    const auto key = static_cast<toolpath::ParamKey>(k);
+    if (auto c = prp::classify_set_coordinate(toolpath::param_name(key)); c && c->role == prp::SetRole::End)
+      spelled.push_back(key);
+  }
+  std::vector<toolpath::ParamKey> listed(std::begin(prp::kSetEndPoints), std::end(prp::kSetEndPoints));
+  std::sort(listed.begin(), listed.end());
+  EXPECT_EQ(listed, spelled);
 }
 
 }  // namespace

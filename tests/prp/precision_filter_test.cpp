@@ -1,6 +1,13 @@
 // zero_value snapping and movement/feed/spin precision (spec 3.1).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
 #include "prp/precision_filter.hpp"
 #include "stream_helpers.hpp"
 
@@ -58,6 +65,42 @@ TEST(PrecisionFilter, FirstOccurrenceFlagsAndText) {
   EXPECT_EQ(p[2].value, toolpath::Value::make_string("1.234"));
   EXPECT_EQ(p[3].value, num(1200));  // spin_precision -2: hundreds
   EXPECT_EQ(p[4].value, num(1.234));  // not a length
+}
+
+// DecimalGrid::round takes a shortcut for whole numbers; over a table of values (whole numbers up
+// to and past the shortcut's limit, fractions, halves, -0, tiny, huge, inf, NaN) and every digit
+// count a PRP can give, it returns the general rule's result bit for bit.
+TEST(PrecisionFilter, WholeNumberShortcutIsTheGeneralRuleBitForBit) {
+  auto bits = [](double v) {
+    std::uint64_t b;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+  };
+  std::vector<double> values = {0.0, -0.0, 1.0, -1.0, 0.5, -0.5, 2.5, 45.0, -45.0, 1500.0, 6000.0, 1.0005,
+                                123.4565, -0.0004, 0.1, 1e-300, 5e-324, 4503599627370496.0, 9007199254740992.0,
+                                9007199254740993.0, 1e15, -1e15, 1e16, 1e300, -1e300,
+                                std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                                std::nan(""), std::numeric_limits<double>::max()};
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 2000; ++i) {
+    const double whole = static_cast<double>(static_cast<std::int64_t>(rng() >> (11 + i % 53))) * (i % 2 ? 1 : -1);
+    values.push_back(whole);
+    values.push_back(std::nextafter(whole, 1e308));
+    values.push_back(std::nextafter(whole, -1e308));
+    values.push_back(whole / 8);
+  }
+  for (int digits : {-3, -1, 0, 1, 2, 3, 4, 5, 6, 9, 12, 15, 16, 17, 22, 23}) {
+    const prp::DecimalGrid grid(digits);
+    const double limit = digits >= 0 && digits <= 15 ? std::ldexp(1.0, 53) / std::pow(10.0, digits) : 0;
+    std::vector<double> table = values;
+    for (double near : {limit, std::floor(limit), std::floor(limit) + 1, std::floor(limit) - 1})
+      table.insert(table.end(), {near, -near});
+    for (double v : table) {
+      const double fast = grid.round(v), general = grid.round_general(v);
+      if (std::isnan(general)) EXPECT_TRUE(std::isnan(fast)) << digits;
+      else EXPECT_EQ(bits(fast), bits(general)) << v << " to " << digits << " digits";
+    }
+  }
 }
 
 }  // namespace
