@@ -111,7 +111,11 @@ int main(int argc, char** argv) {
     toolpath::TraceWriter writer(out);
     toolpath::Command c;
     while (source.next(c)) writer.write(c);
+    writer.flush();
   }
+  // The job file was just written: let the disk take it now, or its write-back would slow the
+  // timed runs (a job a user posts has long been on disk).
+  ::sync();
   const double megabytes = static_cast<double>(fs::file_size(job)) / 1e6;
 
   // Reading alone, to tell the reader's share from the engine's.
