@@ -215,13 +215,12 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Fields&
   pieces_ = static_cast<int>(cuts_.size()) - 1;
 }
 
-// Hands out the next piece and its kind: a chord is a @line (@line_5x), a smaller arc keeps the
-// original's name.
-// Told without make_arc's atan2, fmod and hypot. The switches that could change an arc are off, or settled by the exact expressions plan() uses;
-// the sweep and the radius are bounded from products of the coordinates. Their rounding errors
-// (a few units in the last place: 1e-13 degrees, 1e-15 of the radius) are far below the margins
-// (1e-9), and an arc near 0, 180 or 360 degrees, or of a radius below 1e-50 or above 1e50, is
-// worked out in full. NaN fails every comparison here, so it is worked out too.
+// Told without make_arc's atan2, fmod and hypot. The switches that could change an arc are off, or
+// settled by the exact expressions plan() uses; the sweep and the radius are bounded from products
+// of the coordinates. Their rounding errors (a few units in the last place: 1e-13 degrees, 1e-15
+// of the radius) are far below the margins (1e-9), and an arc near 0, 180 or 360 degrees, or of a
+// radius below 1e-50 or above 1e50, is worked out in full. NaN fails every comparison here, so it
+// is worked out too.
 bool arc_surely_passes(const ArcSettings& s, const Eigen::Vector3d& start, const Eigen::Vector3d& end,
                        const Eigen::Vector3d& centre, Plane plane, Direction direction, bool five_axis, bool tilted) {
   if (!s.arc_exist || s.quadrants || (five_axis && !s.arc_5x) || (tilted && s.main_planes) ||
@@ -255,6 +254,8 @@ bool arc_surely_passes(const ArcSettings& s, const Eigen::Vector3d& start, const
   return s.min_length <= 0 || radius * low * (std::numbers::pi / 180.0) * (1 - kMargin) > s.min_length;
 }
 
+// Hands out the next piece and its kind: a chord is a @line (@line_5x), a smaller arc keeps the
+// original's name.
 void ArcFilter::emit(toolpath::Command& out, CommandKind& kind) {
   const int i = piece_++;
   const bool last = piece_ == pieces_;
