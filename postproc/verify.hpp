@@ -62,7 +62,8 @@ struct Tolerances {
 
 // The toolpath side. Collects the commands the post received (Engine's RunOptions::posted), then
 // yields their motion with subroutine calls and loops expanded (a body called N times, or in a
-// loop of N, runs N times). Bodies are kept in memory until the run ends.
+// loop of N, runs N times). The commands wait in temporary files, not in memory: memory does not
+// grow with the job. Throws std::runtime_error when no temporary file can be made.
 class ExpectedMotion {
 public:
   explicit ExpectedMotion(const prp::MachineParameters& machine);

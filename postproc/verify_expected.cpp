@@ -8,16 +8,15 @@
 //   @start_tool / @stop_tool   spindle on / off;  @m_feed_spin, @feed_spin: a new spindle speed
 //   @drill ... @end_drill      the canned cycle, hole by hole (drilling, peck, tapping)
 //   @end_program               spindle stop, lift to the end height, then the end position in X Y
-//   @call_proc, @proc, @loop   the body runs proc_count / loop_count times where it is called
+//   @call_proc, @proc, @loop   expanded before the commands get here (verify_expansion.cpp)
 #include <cmath>
 #include <deque>
-#include <map>
 #include <stdexcept>
 #include <string_view>
 
 #include <fmt/format.h>
 
-#include "postproc/verify.hpp"
+#include "postproc/verify_modeller.hpp"
 #include "prp/prp.hpp"
 #include "toolpath/value.hpp"
 
@@ -262,111 +261,15 @@ private:
   double clearance_ = 0, upper_ = 0, lower_ = 0, step_ = 0, cycle_feed_ = 0;
 };
 
-using Body = std::vector<Command>;
-
-// Walks the main program, running each called body (and each loop) as often as it repeats.
-class Expansion final : public MotionSource {
-public:
-  Expansion(const prp::MachineParameters& machine, const Body& main, const std::map<std::int64_t, Body>& bodies)
-      : bodies_(bodies), modeller_(machine, pending_) {
-    frames_.push_back({&main, 0, 1, {}});
-  }
-
-  bool next(Motion& out) override {
-    while (pending_.empty()) {
-      if (!step()) return false;
-    }
-    out = std::move(pending_.front());
-    pending_.pop_front();
-    return true;
-  }
-
-private:
-  struct Loop {
-    std::size_t start;
-    std::int64_t remaining;
-  };
-  struct Frame {
-    const Body* body;
-    std::size_t pos;
-    std::int64_t repeats;
-    std::vector<Loop> loops;
-  };
-
-  bool step() {
-    if (frames_.empty()) return false;
-    Frame& f = frames_.back();
-    if (f.pos >= f.body->size()) {
-      if (--f.repeats > 0) {
-        f.pos = 0;
-        f.loops.clear();
-      } else {
-        frames_.pop_back();
-      }
-      return true;
-    }
-    const Command& c = (*f.body)[f.pos++];
-    if (is(c, "@loop")) {
-      f.loops.push_back({f.pos, std::max<std::int64_t>(1, static_cast<std::int64_t>(number_or(c, "loop_count", 1)))});
-    } else if (is(c, "@end_loop")) {
-      if (!f.loops.empty() && --f.loops.back().remaining > 0) {
-        f.pos = f.loops.back().start;
-      } else if (!f.loops.empty()) {
-        f.loops.pop_back();
-      }
-    } else if (is(c, "@call_proc")) {
-      auto label = static_cast<std::int64_t>(number_or(c, "label", 0));
-      auto body = bodies_.find(label);
-      if (body == bodies_.end())
-        throw std::runtime_error(fmt::format("command #{} @call_proc: subroutine {} has no body", c.index, label));
-      if (frames_.size() >= 64)
-        throw std::runtime_error(fmt::format("command #{} @call_proc: calls nest deeper than 64", c.index));
-      auto count = std::max<std::int64_t>(1, static_cast<std::int64_t>(number_or(c, "proc_count", 1)));
-      frames_.push_back({&body->second, 0, count, {}});
-    } else {
-      modeller_.command(c);
-    }
-    return true;
-  }
-
-  const std::map<std::int64_t, Body>& bodies_;
-  std::deque<Motion> pending_;
-  Modeller modeller_;
-  std::vector<Frame> frames_;
-};
-
 }  // namespace
 
-struct ExpectedMotion::Data {
-  const prp::MachineParameters& machine;
-  Body main;
-  std::map<std::int64_t, Body> bodies;
-  Body* current = nullptr;  // the body being read (nullptr: the main program)
+struct CommandModel::State {
+  Modeller modeller;
 };
 
-ExpectedMotion::ExpectedMotion(const prp::MachineParameters& machine) : data_(std::make_unique<Data>(Data{machine, {}, {}, nullptr})) {}
-ExpectedMotion::~ExpectedMotion() = default;
-
-void ExpectedMotion::add(const Command& command) {
-  if (is(command, "@proc")) {
-    data_->current = &data_->bodies[static_cast<std::int64_t>(number_or(command, "label", 0))];
-    data_->current->clear();
-    return;
-  }
-  if (is(command, "@end_proc")) {
-    data_->current = nullptr;
-    return;
-  }
-  if (is(command, "@message")) return;
-  Command kept;
-  kept.name = command.name;
-  kept.index = command.index;
-  kept.parameters = command.parameters;
-  (data_->current ? *data_->current : data_->main).push_back(std::move(kept));
-}
-
-std::unique_ptr<MotionSource> ExpectedMotion::motion() {
-  return std::make_unique<Expansion>(data_->machine, data_->main, data_->bodies);
-}
+CommandModel::CommandModel(const prp::MachineParameters& machine, std::deque<Motion>& out)
+    : state_(std::make_unique<State>(State{Modeller(machine, out)})) {}
+CommandModel::~CommandModel() = default;
+void CommandModel::command(const Command& c) { state_->modeller.command(c); }
 
 }  // namespace postproc::verify
