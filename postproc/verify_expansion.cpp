@@ -34,6 +34,7 @@ std::int64_t count_or(const Command& c, std::string_view name, std::int64_t fall
 }
 
 constexpr std::size_t kMaxDepth = 64;  // frames, the main program's included
+constexpr std::size_t kMaxOpenLoops = 64;  // per frame: @loop without @end_loop must not grow memory
 
 // Records [first, end) of a spool.
 struct Range {
@@ -91,6 +92,8 @@ private:
     f.pos = f.spool->position();
     const Command& c = command_;
     if (is(c, "@loop")) {
+      if (f.loops.size() >= kMaxOpenLoops)
+        throw std::runtime_error(fmt::format("command #{} @loop: loops nest deeper than {}", c.index, kMaxOpenLoops));
       f.loops.push_back({f.pos, std::max<std::int64_t>(1, count_or(c, "loop_count", 1))});
     } else if (is(c, "@end_loop")) {
       if (!f.loops.empty() && --f.loops.back().remaining > 0) {

@@ -153,6 +153,17 @@ TEST(VerifyExpansion, CallsNestUpTo64Deep) {
   }
 }
 
+// 64 open loops in one body are allowed, the 65th is an error (an @loop never closed must not
+// grow memory with the job).
+TEST(VerifyExpansion, LoopsNestUpTo64Deep) {
+  for (int depth : {64, 65}) {
+    std::string job;
+    for (int i = 0; i < depth; ++i) job += "@loop ==> loop_count:1\n";
+    job += "@rapid_move ==> xpos:1\n";
+    EXPECT_EQ(expand(job), depth == 64 ? "64:X1" : "error: command #64 @loop: loops nest deeper than 64") << depth;
+  }
+}
+
 // Bodies of many mebibytes, called alternately from a loop: the spool's reads jump between blocks
 // that are on disk and the block still in memory, and every record still comes back.
 TEST(VerifyExpansion, BodiesLargerThanTheSpoolBlock) {
