@@ -69,8 +69,10 @@ public:
   explicit ExpectedMotion(const prp::MachineParameters& machine);
   ~ExpectedMotion();
   void add(const toolpath::Command& command);
-  // Throws std::runtime_error naming the command when the stream has something verify cannot model.
-  std::unique_ptr<MotionSource> motion();
+  // Throws std::runtime_error naming the command when the stream has something verify cannot model,
+  // and when the calls and loops would run more than `max_commands` commands (a runaway count).
+  static constexpr std::uint64_t default_max_commands = 1'000'000'000;
+  std::unique_ptr<MotionSource> motion(std::uint64_t max_commands = default_max_commands);
 
 private:
   struct Data;

@@ -7,6 +7,7 @@
 // records. Memory then holds, whatever the job length: the spools' blocks, a (first, end) pair per
 // subroutine label, and the frames of the calls being run (at most 64, each with its open loops).
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <map>
 #include <stdexcept>
@@ -27,10 +28,14 @@ using toolpath::Command;
 bool is(const Command& c, std::string_view name) { return toolpath::iequals(c.name, name); }
 
 // A count (proc_count, loop_count, label) of a command; `fallback` when absent or not a number.
+// A value beyond 1e15 (or not finite) is no count: an error naming it, not an undefined conversion.
 std::int64_t count_or(const Command& c, std::string_view name, std::int64_t fallback) {
   const toolpath::Value* v = c.find(name);
   if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return fallback;
-  return static_cast<std::int64_t>(v->as_number());
+  const double x = v->as_number();
+  if (!(std::abs(x) <= 1e15))
+    throw std::runtime_error(fmt::format("command #{} {}: {} {} is not a count", c.index, c.name, name, x));
+  return static_cast<std::int64_t>(x);
 }
 
 constexpr std::size_t kMaxDepth = 64;  // frames, the main program's included
@@ -48,8 +53,8 @@ struct Range {
 class Expansion final : public MotionSource {
 public:
   Expansion(const prp::MachineParameters& machine, prp::CommandSpool& main, prp::CommandSpool& bodies,
-            const std::map<std::int64_t, Range>& ranges)
-      : bodies_(bodies), ranges_(ranges), model_(machine, pending_) {
+            const std::map<std::int64_t, Range>& ranges, std::uint64_t max_commands)
+      : bodies_(bodies), ranges_(ranges), model_(machine, pending_), budget_(max_commands) {
     frames_.push_back({&main, {0, main.end()}, 0, 1, {}});
   }
 
@@ -87,6 +92,10 @@ private:
       }
       return true;
     }
+    if (budget_ == 0)
+      throw std::runtime_error(fmt::format("the calls and loops run more than {} commands: a runaway count?", run_));
+    --budget_;
+    ++run_;
     if (f.spool->position() != f.pos) f.spool->seek(f.pos);
     if (!f.spool->read(command_)) throw std::runtime_error("verify: the temporary file of posted commands was cut short");
     f.pos = f.spool->position();
@@ -122,6 +131,8 @@ private:
   CommandModel model_;
   std::vector<Frame> frames_;
   Command command_;  // the record read last (its buffers are reused)
+  std::uint64_t budget_;   // commands that may still run
+  std::uint64_t run_ = 0;  // commands run
 };
 
 }  // namespace
@@ -162,8 +173,8 @@ void ExpectedMotion::add(const Command& command) {
   }
 }
 
-std::unique_ptr<MotionSource> ExpectedMotion::motion() {
-  return std::make_unique<Expansion>(data_->machine, data_->main, data_->bodies, data_->ranges);
+std::unique_ptr<MotionSource> ExpectedMotion::motion(std::uint64_t max_commands) {
+  return std::make_unique<Expansion>(data_->machine, data_->main, data_->bodies, data_->ranges, max_commands);
 }
 
 }  // namespace postproc::verify

@@ -167,7 +167,8 @@ private:
   void change_tool(const Command& c) {
     spindle(c, 0, 0.0);
     Motion t = base(c, MotionKind::Tool);
-    t.tool = static_cast<std::int64_t>(number_or(c, "tool_number", 0));
+    const double tool = number_or(c, "tool_number", 0);
+    t.tool = std::abs(tool) <= 1e15 ? static_cast<std::int64_t>(tool) : -1;  // no undefined conversion
     emit(t);
     if (double s = number_or(c, "spin", 0.0); s > 0) spindle(c, direction(c), s);
     auto xn = number(c, "xnext"), yn = number(c, "ynext"), zn = number(c, "znext");

@@ -21,8 +21,8 @@ using postproc::verify::Motion;
 using postproc::verify::MotionKind;
 
 // Each rapid as "<command index>:X<x>", in the order the expansion yields them.
-std::string expand(ExpectedMotion& expected) {
-  auto source = expected.motion();
+std::string expand(ExpectedMotion& expected, std::uint64_t max_commands = ExpectedMotion::default_max_commands) {
+  auto source = expected.motion(max_commands);
   std::string out;
   Motion m;
   while (source->next(m)) {
@@ -34,7 +34,7 @@ std::string expand(ExpectedMotion& expected) {
 
 // The motion of a job written one command a line (`@name ==> name:value ...`, the trace format's
 // short form), or the error it stops with.
-std::string expand(const std::string& job) {
+std::string expand(const std::string& job, std::uint64_t max_commands = ExpectedMotion::default_max_commands) {
   const prp::MachineParameters machine = prp::defaults(prp::Units::Metric);
   ExpectedMotion expected(machine);
   std::istringstream in(job);
@@ -42,7 +42,7 @@ std::string expand(const std::string& job) {
   toolpath::Command c;
   while (reader.next(c)) expected.add(c);
   try {
-    return expand(expected);
+    return expand(expected, max_commands);
   } catch (const std::runtime_error& e) {
     return std::string("error: ") + e.what();
   }
@@ -127,6 +127,9 @@ const Case cases[] = {
     {"a call to a label without a body",
      "@rapid_move ==> xpos:1\n@call_proc ==> label:7\n@proc ==> label:1\n@end_proc\n",
      "error: command #1 @call_proc: subroutine 7 has no body"},
+    {"a count that is no count",
+     "@call_proc ==> label:1 proc_count:1e300\n@proc ==> label:1\n@end_proc\n",
+     "error: command #0 @call_proc: proc_count 1e+300 is not a count"},
     {"a body that calls itself",
      "@call_proc ==> label:1\n@proc ==> label:1\n@rapid_move ==> xpos:1\n@call_proc ==> label:1\n@end_proc\n",
      "error: command #3 @call_proc: calls nest deeper than 64"},
@@ -162,6 +165,16 @@ TEST(VerifyExpansion, LoopsNestUpTo64Deep) {
     job += "@rapid_move ==> xpos:1\n";
     EXPECT_EQ(expand(job), depth == 64 ? "64:X1" : "error: command #64 @loop: loops nest deeper than 64") << depth;
   }
+}
+
+// Calls and loops that would run more commands than allowed stop with an error (a runaway count
+// in a stream must not keep verify busy for ever); exactly the allowed number runs.
+TEST(VerifyExpansion, RunawayCountsStop) {
+  const std::string job = "@loop ==> loop_count:1000000000\n@rapid_move ==> xpos:1\n@end_loop\n";
+  EXPECT_EQ(expand(job, 10), "error: the calls and loops run more than 10 commands: a runaway count?");
+  EXPECT_EQ(expand("@loop ==> loop_count:3\n@rapid_move ==> xpos:1\n@end_loop\n", 7), "1:X1 1:X1 1:X1");
+  EXPECT_EQ(expand("@loop ==> loop_count:3\n@rapid_move ==> xpos:1\n@end_loop\n", 6),
+            "error: the calls and loops run more than 6 commands: a runaway count?");
 }
 
 // Bodies of many mebibytes, called alternately from a loop: the spool's reads jump between blocks
