@@ -77,7 +77,7 @@ bench::JobShape shape_for(const std::string& shape, const std::string& prp) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   std::size_t motions = 10'000'000, runs = 3;
   std::string post = "machines/fanuc/fanuc.gpp", prp = "machines/fanuc/fanuc.prp", job, shape = "solidcam";
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -99,8 +99,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   namespace fs = std::filesystem;
-  fs::path work = fs::temp_directory_path() / fmt::format("post_bench-{}", ::getpid());
+  const fs::path work = fs::temp_directory_path() / fmt::format("post_bench-{}", ::getpid());
   fs::create_directories(work);
+  struct RemoveAtExit {  // the job and the NC files go, whether the runs succeed or throw
+    const fs::path& path;
+    ~RemoveAtExit() {
+      std::error_code ignored;
+      fs::remove_all(path, ignored);
+    }
+  } remove_at_exit{work};
   std::string made;
   if (job.empty()) {
     const bench::JobShape s = shape_for(shape, prp);
@@ -145,6 +152,14 @@ int main(int argc, char** argv) {
                            median.seconds, rate(median), megabytes / median.seconds);
   std::cout << fmt::format("NC out: {:.1f} MB ({} lines)\n", static_cast<double>(best.out_bytes) / 1e6, best.lines);
   std::cout << fmt::format("peak memory: {:.1f} MB\n", static_cast<double>(peak_rss_kib()) / 1024.0);
-  fs::remove_all(work);
   return 0;
+}
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {  // a PRP or post that does not load, a job that does not post
+    std::cerr << "post_bench: " << e.what() << '\n';
+    return 1;
+  }
 }
