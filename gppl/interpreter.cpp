@@ -91,33 +91,18 @@ void Interpreter::assign(VariableId id, const Value& value, ChangeOverride chang
 }
 
 void Interpreter::assign_integer(VariableId id, std::int64_t value, ChangeOverride change) {
-  State& s = *state_;
-  Cell* c = s.typed_host_cell(id, Type::Integer);
-  if (!c) return assign_slowly(*this, id, value, Value::of_integer, change);
-  const bool differs = c->value.integer != value;
-  c->value.integer = value;
-  State::mark_assigned(*c, differs, change);
-  s.note_host_assignment(id);
+  if (!state_->assign_in_place<&Value::integer>(id, Type::Integer, value, change))
+    assign_slowly(*this, id, value, Value::of_integer, change);
 }
 
 void Interpreter::assign_numeric(VariableId id, double value, ChangeOverride change) {
-  State& s = *state_;
-  Cell* c = s.typed_host_cell(id, Type::Numeric);
-  if (!c) return assign_slowly(*this, id, value, Value::of_numeric, change);
-  const bool differs = c->value.numeric != value;
-  c->value.numeric = value;
-  State::mark_assigned(*c, differs, change);
-  s.note_host_assignment(id);
+  if (!state_->assign_in_place<&Value::numeric>(id, Type::Numeric, value, change))
+    assign_slowly(*this, id, value, Value::of_numeric, change);
 }
 
 void Interpreter::assign_logical(VariableId id, bool value, ChangeOverride change) {
-  State& s = *state_;
-  Cell* c = s.typed_host_cell(id, Type::Logical);
-  if (!c) return assign_slowly(*this, id, value, Value::of_logical, change);
-  const bool differs = c->value.logical != value;
-  c->value.logical = value;
-  State::mark_assigned(*c, differs, change);
-  s.note_host_assignment(id);
+  if (!state_->assign_in_place<&Value::logical>(id, Type::Logical, value, change))
+    assign_slowly(*this, id, value, Value::of_logical, change);
 }
 
 void Interpreter::assign_string(VariableId id, std::string_view value, ChangeOverride change) {

@@ -108,6 +108,18 @@ struct Interpreter::State {
     if (trace != nullptr) note_traced_assignment(id);
   }
   void note_traced_assignment(VariableId id);
+  // The host's typed assignment of a number or logical (`Field` of Value) when the cell is typed
+  // and holds `type`; false when the general path must do it (conversion, untyped, no such cell).
+  template <auto Field, typename T>
+  bool assign_in_place(VariableId id, Type type, T value, ChangeOverride change) {
+    Cell* c = typed_host_cell(id, type);
+    if (!c) return false;
+    const bool differs = c->value.*Field != value;
+    c->value.*Field = value;
+    mark_assigned(*c, differs, change);
+    note_host_assignment(id);
+    return true;
+  }
   const std::string& host_name(VariableId id) const;
 
   // machine.cpp: cells, conversions, assignment
