@@ -25,14 +25,12 @@ namespace {
 
 using toolpath::Command;
 
-bool is(const Command& c, std::string_view name) { return toolpath::iequals(c.name, name); }
-
 // A count (proc_count, loop_count, label) of a command; `fallback` when absent or not a number.
 // A value beyond 1e15 (or not finite) is no count: an error naming it, not an undefined conversion.
 std::int64_t count_or(const Command& c, std::string_view name, std::int64_t fallback) {
-  const toolpath::Value* v = c.find(name);
-  if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return fallback;
-  const double x = v->as_number();
+  const std::optional<double> n = number(c, name);
+  if (!n) return fallback;
+  const double x = *n;
   if (!(std::abs(x) <= 1e15))
     throw std::runtime_error(fmt::format("command #{} {}: {} {} is not a count", c.index, c.name, name, x));
   return static_cast<std::int64_t>(x);

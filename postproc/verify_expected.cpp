@@ -27,14 +27,6 @@ using toolpath::Command;
 using toolpath::iequals;
 namespace geo = toolpath::geometry;
 
-bool is(const Command& c, std::string_view name) { return iequals(c.name, name); }
-
-std::optional<double> number(const Command& c, std::string_view name) {
-  const toolpath::Value* v = c.find(name);
-  if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return std::nullopt;
-  return v->as_number();
-}
-
 double number_or(const Command& c, std::string_view name, double fallback) { return number(c, name).value_or(fallback); }
 
 std::string word(const Command& c, std::string_view name) {

@@ -4,10 +4,22 @@
 
 #include <deque>
 #include <memory>
+#include <optional>
+#include <string_view>
 
 #include "postproc/verify.hpp"
+#include "toolpath/value.hpp"
 
 namespace postproc::verify {
+
+inline bool is(const toolpath::Command& c, std::string_view name) { return toolpath::iequals(c.name, name); }
+
+// A parameter's number (integer or numeric); nullopt when absent or not a number.
+inline std::optional<double> number(const toolpath::Command& c, std::string_view name) {
+  const toolpath::Value* v = c.find(name);
+  if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return std::nullopt;
+  return v->as_number();
+}
 
 // Turns commands, in the order the machine runs them, into motion appended to `out`, keeping the
 // tool's position, the spindle state and the drill cycle between commands.
