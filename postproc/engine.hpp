@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "postproc/output_files.hpp"
-#include "postproc/regression.hpp"
+#include "postproc/line_origin.hpp"
 #include "prp/prp.hpp"
 #include "toolpath/source.hpp"
 

@@ -18,17 +18,10 @@
 #include <vector>
 
 #include "postproc/line_compare.hpp"
+#include "postproc/line_origin.hpp"
 #include "toolpath/trace_reader.hpp"
 
 namespace postproc {
-
-// Who produced an output line.
-struct LineOrigin {
-  std::size_t command_index = 0;  // position of the stream command, from 0
-  std::string_view command;       // "@arc"
-  std::string_view procedure;     // the GPP procedure that started the line ("@arc", "@rapid_move")
-  int source_line = 0;            // its line in the post
-};
 
 struct ExpectedLine {
   std::string text;
