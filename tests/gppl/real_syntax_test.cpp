@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
+#include <fstream>
 
 #include "support.hpp"
 
@@ -235,6 +237,29 @@ TEST(KeywordCase, AnySpellingPostsTheSameLines) {
   EXPECT_EQ(outputs[0], "G2     N1.5 x\nflags\nABCd");
   EXPECT_EQ(outputs[1], outputs[0]);
   EXPECT_EQ(outputs[2], outputs[0]);
+}
+
+// The words of the file level and the stop statements, in upper and mixed case.
+TEST(KeywordCase, FileLevelAndStopWords) {
+  const auto dir = std::filesystem::temp_directory_path() / "gppl-keyword-case";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "sub.gpp") << "PROC @Sub\n  Local Logical done\n  done = TRUE\n  {NB 'sub'}\n  RETURN\nENDP\n";
+  std::ofstream(dir / "main.gpp") << "INCLUDE 'sub.gpp'\n"
+                                     "@T\n  CALL @SUB\n  IF stop EQ 1 THEN\n    EXIT\n  ELSEIF stop EQ 2\n    Abort\n"
+                                     "  ENDIF\n  {Nb 'rest'}\nEndP\n";
+  auto program = gppl::compile_file((dir / "main.gpp").string(), {});
+  CapturedLines out;
+  gppl::Interpreter run(program, out);
+  const auto stop = run.add_variable("stop");
+  const auto t = *run.find_procedure("@t");
+  EXPECT_EQ(run.call(t), gppl::RunResult::Normal);
+  run.assign(stop, integer(1));
+  EXPECT_EQ(run.call(t), gppl::RunResult::Exit);
+  run.assign(stop, integer(2));
+  EXPECT_EQ(run.call(t), gppl::RunResult::Abort);
+  run.finish();
+  EXPECT_EQ(out.lines, (std::vector<std::string>{"sub", "rest", "sub", "sub"}));
+  std::filesystem::remove_all(dir);
 }
 
 // A variable may still be called input or print: such a line is an assignment.
