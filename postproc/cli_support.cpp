@@ -40,8 +40,11 @@ std::vector<gppl::Answer> read_answers_file(const std::string& path) {
     if (text.empty() || text.front() == '#') continue;
     const std::size_t eq = text.find('=');
     const std::string_view name = eq == std::string_view::npos ? std::string_view() : trimmed(text.substr(0, eq));
-    if (name.empty())
-      throw std::runtime_error(fmt::format("{}:{}: expected NAME=VALUE (or a # comment), not `{}`", path, number, text));
+    if (name.empty()) {
+      const std::size_t column = std::size_t(text.data() - line.data()) + 1;
+      throw std::runtime_error(
+          fmt::format("{}:{}:{}: expected NAME=VALUE (or a # comment), not `{}`", path, number, column, text));
+    }
     answers.push_back({std::string(name), std::string(trimmed(text.substr(eq + 1))), fmt::format("{}:{}", path, number)});
   }
   return answers;

@@ -52,7 +52,7 @@ TEST(Answers, FileThenCommandLine) {
 
 TEST(Answers, Problems) {
   const std::filesystem::path bad = std::filesystem::temp_directory_path() / "postproc-bad-answers.txt";
-  std::ofstream(bad) << "# fine\n\nprogram_nr = 3\n= 4\n";
+  std::ofstream(bad) << "# fine\n\nprogram_nr = 3\n  = 4\n";
   struct Case {
     std::vector<std::string> args;
     int code;
@@ -67,7 +67,7 @@ TEST(Answers, Problems) {
        "golden/real-syntax/post.gpp:25:3: error 420: Numeric expression is not of logical type: --answer "
        "use_cycle832=maybe: use_cycle832 needs a logical (0, 1, TRUE or FALSE), not 'maybe'\n"},
       {{"--answers", "no/such/answers.txt"}, 1, "no/such/answers.txt: cannot open the answers file\n"},
-      {{"--answers", bad.string()}, 1, bad.string() + ":4: expected NAME=VALUE (or a # comment), not `= 4`\n"},
+      {{"--answers", bad.string()}, 1, bad.string() + ":4:3: expected NAME=VALUE (or a # comment), not `= 4`\n"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.args.back());
