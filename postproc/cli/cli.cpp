@@ -35,19 +35,24 @@ Arguments::Arguments(std::span<const std::string> args, std::span<const OptionSp
     std::string key(spec->name);
     if (!spec->takes_value) {
       if (has_inline) throw UsageError{"option " + key + " takes no value"};
-      values_[key] = "";
+      values_[key].push_back("");
     } else if (has_inline) {
-      values_[key] = inline_value;
+      values_[key].push_back(inline_value);
     } else {
       if (i + 1 >= args.size()) throw UsageError{"option " + key + " needs a value"};
-      values_[key] = args[++i];
+      values_[key].push_back(args[++i]);
     }
   }
 }
 
 std::string Arguments::value(std::string_view option, std::string_view fallback) const {
   auto it = values_.find(option);
-  return it == values_.end() ? std::string(fallback) : it->second;
+  return it == values_.end() ? std::string(fallback) : it->second.back();
+}
+
+std::vector<std::string> Arguments::values(std::string_view option) const {
+  auto it = values_.find(option);
+  return it == values_.end() ? std::vector<std::string>() : it->second;
 }
 
 const std::vector<Subcommand>& subcommands() {

@@ -34,12 +34,14 @@ public:
   Arguments(std::span<const std::string> args, std::span<const OptionSpec> specs);
 
   bool has(std::string_view option) const { return values_.count(std::string(option)) > 0; }
-  // The option's value, or `fallback` when the option was not given.
+  // The option's value (its last one when repeated), or `fallback` when the option was not given.
   std::string value(std::string_view option, std::string_view fallback = {}) const;
+  // Every value of a repeatable option (--answer), in command-line order.
+  std::vector<std::string> values(std::string_view option) const;
   const std::vector<std::string>& positional() const { return positional_; }
 
 private:
-  std::map<std::string, std::string, std::less<>> values_;
+  std::map<std::string, std::vector<std::string>, std::less<>> values_;
   std::vector<std::string> positional_;
 };
 

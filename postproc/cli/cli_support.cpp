@@ -15,10 +15,42 @@ std::vector<OptionSpec> engine_option_specs() {
       {"--include", "-I", true, "a folder where `inc` files are looked up"},
       {"--units", "", true, "metric or inch: which half of the PRP's pairs applies (default: the job's inch_system)"},
       {"--no-modal-reset", "", false, "keep modal memory across subroutine boundaries"},
+      {"--answer", "", true, "NAME=VALUE: the answer to the post's `input` of NAME (repeatable)"},
+      {"--answers", "", true, "a file of NAME=VALUE lines (`#` comments) answering `input` statements"},
   };
 }
 
-EngineOptions engine_options(const Arguments& args) {
+namespace {
+
+std::string_view trimmed(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+}  // namespace
+
+std::vector<gppl::Answer> read_answers_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open the answers file");
+  std::vector<gppl::Answer> answers;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    const std::string_view text = trimmed(line);
+    if (text.empty() || text.front() == '#') continue;
+    const std::size_t eq = text.find('=');
+    const std::string_view name = eq == std::string_view::npos ? std::string_view() : trimmed(text.substr(0, eq));
+    if (name.empty()) {
+      const std::size_t column = std::size_t(text.data() - line.data()) + 1;
+      throw std::runtime_error(
+          fmt::format("{}:{}:{}: expected NAME=VALUE (or a # comment), not `{}`", path, number, column, text));
+    }
+    answers.push_back({std::string(name), std::string(trimmed(text.substr(eq + 1))), fmt::format("{}:{}", path, number)});
+  }
+  return answers;
+}
+
+EngineOptions engine_options(const Arguments& args, std::ostream* log) {
   EngineOptions o;
   o.post = args.value("--post");
   if (o.post.empty()) throw UsageError{"--post is required"};
@@ -34,6 +66,15 @@ EngineOptions engine_options(const Arguments& args) {
       throw UsageError{"--units must be metric or inch, not `" + units + "`"};
   }
   o.reset_modal_memory_at_subroutines = !args.has("--no-modal-reset");
+  // The file first, so that an --answer on the command line overrides it (the last answer wins).
+  for (const std::string& file : args.values("--answers"))
+    for (auto& a : read_answers_file(file)) o.answers.push_back(std::move(a));
+  for (const std::string& given : args.values("--answer")) {
+    const std::size_t eq = given.find('=');
+    if (eq == std::string::npos || eq == 0) throw UsageError{"--answer needs NAME=VALUE, not `" + given + "`"};
+    o.answers.push_back({given.substr(0, eq), given.substr(eq + 1), "--answer " + given});
+  }
+  o.log = log;
   return o;
 }
 

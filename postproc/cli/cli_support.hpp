@@ -16,9 +16,13 @@
 
 namespace postproc::cli {
 
-// --post, --prp, --include, --units, --no-modal-reset.
+// --post, --prp, --include, --units, --no-modal-reset, --answer (repeatable), --answers.
 std::vector<OptionSpec> engine_option_specs();
-EngineOptions engine_options(const Arguments& args);
+// `log` receives the post's print and input messages (the subcommand's stderr).
+EngineOptions engine_options(const Arguments& args, std::ostream* log);
+// NAME=VALUE lines of an answers file (`#` comment lines, blank lines); throws
+// std::runtime_error "FILE:LINE:COLUMN: ..." on a line without a name and `=`.
+std::vector<gppl::Answer> read_answers_file(const std::string& path);
 
 // The job file, opened so that the progress bar can tell how far the reader is.
 struct Input {

@@ -44,7 +44,7 @@ private:
 
 int run_explain(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (args.positional().size() != 1) throw UsageError{"expected one job file"};
-  EngineOptions engine_opts = engine_options(args);
+  EngineOptions engine_opts = engine_options(args, &err);
   Engine engine(engine_opts);
   Input input = Input::open(args.positional()[0]);
   OutputFiles files(".", OutputFiles::LineEnd::LF, true);

@@ -12,7 +12,7 @@ namespace {
 
 int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (args.positional().size() != 1) throw UsageError{"expected one job file"};
-  EngineOptions engine_opts = engine_options(args);
+  EngineOptions engine_opts = engine_options(args, &err);
   Destination to = Destination::parse(args.value("-o"));
   bool quiet = args.has("--quiet");
   auto line_end = args.has("--crlf") ? OutputFiles::LineEnd::CRLF : OutputFiles::LineEnd::LF;

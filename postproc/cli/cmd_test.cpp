@@ -75,7 +75,7 @@ int update_golden(const Engine& engine, Input& input, const std::string& expect,
 
 int run_test(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (args.positional().size() != 1) throw UsageError{"expected one job file"};
-  EngineOptions engine_opts = engine_options(args);
+  EngineOptions engine_opts = engine_options(args, &err);
   CompareOptions compare = compare_options(args);
   std::string expect = args.value("--expect");
   bool quiet = args.has("--quiet");

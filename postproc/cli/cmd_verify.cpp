@@ -28,9 +28,9 @@ void print_side(std::ostream& out, std::string_view label, const std::optional<v
   out << fmt::format("  {:<9}{}\n", label, m ? verify::describe(*m) : std::string("(nothing)"));
 }
 
-int run_verify(const Arguments& args, std::ostream& out, std::ostream&) {
+int run_verify(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (args.positional().size() != 1) throw UsageError{"expected one job file"};
-  EngineOptions engine_opts = engine_options(args);
+  EngineOptions engine_opts = engine_options(args, &err);
   verify::Tolerances tolerances;
   tolerances.position = positive_number(args, "--tolerance", tolerances.position);
   std::optional<std::filesystem::path> keep;

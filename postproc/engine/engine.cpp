@@ -80,6 +80,8 @@ public:
         }) {
     sink_.line_numbers = &line_numbers_;
     interpreter_.set_trace_stream(options.trace);
+    interpreter_.set_log_stream(engine.options().log);
+    if (!engine.options().answers.empty()) interpreter_.set_answers(engine.options().answers);
     interpreter_.set_limits(engine.options().max_loop_iterations, engine.options().max_call_depth);
     for (const auto& c : enums_.constants())
       if (auto id = interpreter_.find_variable(c.name)) interpreter_.assign(*id, gppl::Value::of_integer(c.code));
@@ -322,6 +324,8 @@ Engine::Engine(EngineOptions options) : options_(std::move(options)) {
   compile.host_variables = host_variables(enums, machine());
   compile.include_paths = options_.include_paths;
   program_ = gppl::compile_file(options_.post, compile);
+  for (const std::string& warning : gppl::check_answers(*program_, options_.answers))
+    if (options_.log) *options_.log << warning << '\n';
 }
 
 Engine::~Engine() = default;

@@ -23,14 +23,11 @@
 #include <string_view>
 #include <vector>
 
+#include "gppl/gppl.hpp"
 #include "postproc/engine/output_files.hpp"
 #include "postproc/engine/line_origin.hpp"
 #include "prp/prp.hpp"
 #include "toolpath/source.hpp"
-
-namespace gppl {
-class Program;
-}
 
 namespace postproc {
 
@@ -46,6 +43,12 @@ struct EngineOptions {
   bool reset_modal_memory_at_subroutines = true;
   std::uint64_t max_loop_iterations = 100'000'000;  // per procedure run: a runaway `while` stops
   int max_call_depth = 200;                         // a runaway recursion stops (error 405)
+  // Answers for the post's `input` statements (runs are not interactive); checked against the
+  // post when it compiles: a value of the wrong type is an error, an answer no `input` reads a
+  // warning on `log`.
+  std::vector<gppl::Answer> answers;
+  // The run log: the post's `print` messages and one line per `input`. nullptr: discarded.
+  std::ostream* log = nullptr;
 };
 
 // One line the run produced (or one directive it executed), with who produced it.
@@ -97,7 +100,8 @@ public:
 
 class Engine {
 public:
-  // Loads the PRP and compiles the post. Throws toolpath::InputError (PRP) or gppl::Errors (post).
+  // Loads the PRP and compiles the post. Throws toolpath::InputError (PRP) or gppl::Errors (post,
+  // or an answer that does not fit its variable).
   explicit Engine(EngineOptions options);
   ~Engine();
 
