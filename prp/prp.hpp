@@ -98,7 +98,8 @@ struct Record {
   std::vector<std::string> params;  // user parameter names, as written
   VarType type = VarType::Numeric;  // Declaration only
   std::string raw;
-  toolpath::SourcePosition where;
+  toolpath::SourcePosition where;       // of the value (a VMID: of the element's first attribute)
+  toolpath::SourcePosition name_where;  // of the name
 };
 
 // A key the spec does not document: kept verbatim, so the post can still read it.
