@@ -96,6 +96,11 @@ void Loader::warning(std::size_t column, std::string message, std::size_t line) 
 }
 
 MachineParameters Loader::run(std::string_view text) {
+  // A SolidCAM machine ID file (VMID) is XML: recognised by content, whatever its extension.
+  std::string_view start = text.starts_with("\xEF\xBB\xBF") ? text.substr(3) : text;
+  const std::size_t first = start.find_first_not_of(" \t\r\n");
+  if (first != std::string_view::npos && start[first] == '<') return run_vmid(text);
+
   std::size_t number = 0;
   std::size_t last_length = 0;
   while (!text.empty() || number == 0) {
@@ -114,6 +119,10 @@ MachineParameters Loader::run(std::string_view text) {
   else if (state_ == State::Body)
     error(last_length + 1, "expected `endp` before the end of the file (is the file truncated?)");
 
+  return finish();
+}
+
+MachineParameters Loader::finish() {
   check_ranges();
   fill_defaults();
   if (!errors_.empty()) {
@@ -123,6 +132,22 @@ MachineParameters Loader::run(std::string_view text) {
     throw LoadError(std::move(errors_));
   }
   return std::move(params_);
+}
+
+void Loader::error_at(toolpath::SourcePosition where, std::string message) {
+  errors_.push_back({std::move(where), std::move(message)});
+}
+
+void Loader::warning_at(toolpath::SourcePosition where, std::string message) {
+  params_.warnings_.push_back({std::move(where), std::move(message)});
+}
+
+bool Loader::add_parameter(Parameter p) {
+  const std::string lkey = lower(p.key);
+  if (params_.index_.count(lkey)) return false;
+  params_.index_.emplace(lkey, params_.parameters_.size());
+  params_.parameters_.push_back(std::move(p));
+  return true;
 }
 
 void Loader::line(std::string_view original, std::size_t number) {
@@ -185,6 +210,12 @@ void Loader::assignment(std::string_view original, std::string_view key, std::si
   const std::size_t column = value_begin + 1;
 
   std::string_view lang;
+  // Real posts leave keys empty (`_4th_axes_around =`): not set, the engine default applies.
+  const KeyInfo* known = find_key(key);
+  if (value.empty() && (!known || known->kind != ValueKind::String)) {
+    if (!known && !record_base(key, lang)) remember_unknown(original, key, key_column, value_begin, value_end);
+    return;
+  }
   if (auto base = record_base(key, lang)) {
     record(*base, lang, key, value, column);
     return;
@@ -192,13 +223,7 @@ void Loader::assignment(std::string_view original, std::string_view key, std::si
   const std::string lkey = lower(key);
   const KeyInfo* info = find_key(key);
   if (!info) {
-    warning(key_column, fmt::format("unknown key `{}`: kept as text for the post", key));
-    UnknownKey u{std::string(key), std::string(original.substr(value_begin, value_end - value_begin)),
-                 at(column)};
-    auto it = std::find_if(params_.unknown_.begin(), params_.unknown_.end(),
-                           [&](const UnknownKey& k) { return toolpath::iequals(k.key, key); });
-    if (it != params_.unknown_.end()) *it = std::move(u);
-    else params_.unknown_.push_back(std::move(u));
+    remember_unknown(original, key, key_column, value_begin, value_end);
     return;
   }
   Parameter p;
@@ -218,6 +243,20 @@ void Loader::assignment(std::string_view original, std::string_view key, std::si
   }
   params_.index_.emplace(lkey, params_.parameters_.size());
   params_.parameters_.push_back(std::move(p));
+}
+
+void Loader::remember_unknown(std::string_view original, std::string_view key, std::size_t key_column,
+                              std::size_t value_begin, std::size_t value_end) {
+  UnknownKey u{std::string(key), std::string(original.substr(value_begin, value_end - value_begin)),
+               at(value_begin + 1)};
+  auto it = std::find_if(params_.unknown_.begin(), params_.unknown_.end(),
+                         [&](const UnknownKey& k) { return toolpath::iequals(k.key, key); });
+  if (it != params_.unknown_.end()) {
+    *it = std::move(u);  // the last value wins, as for known keys; warned about once
+    return;
+  }
+  warning(key_column, fmt::format("unknown key `{}`: kept as text for the post", key));
+  params_.unknown_.push_back(std::move(u));
 }
 
 bool Loader::parse_scalar(const KeyInfo& info, std::string_view value, std::size_t column, Parameter& out) {
