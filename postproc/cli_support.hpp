@@ -20,6 +20,10 @@ namespace postproc::cli {
 std::vector<OptionSpec> engine_option_specs();
 EngineOptions engine_options(const Arguments& args);
 
+// The machine file's warnings (unknown keys, ...), each once, as `file:line:col: warning: ...`. The
+// engine loads the file once per unit half; both give the same warnings, so one half is printed.
+void print_machine_warnings(const Engine& engine, std::ostream& err);
+
 // The job file, opened so that the progress bar can tell how far the reader is.
 struct Input {
   std::string path;

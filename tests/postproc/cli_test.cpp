@@ -57,7 +57,7 @@ TEST(Cli, UsageErrorsOfEverySubcommand) {
       {{"run", "--post", post, "--prp", "no.prp", "j.trace"}, 1, "no.prp:0:0: cannot open the PRP file"},
       {{"run", "--post", post, "no/such.trace"}, 1, "no/such.trace:0:0: cannot open file"},
       {{"run", "--help"}, 0, ""},
-      {{"check"}, 2, "postproc check: expected one or more .gpp or .prp files"},
+      {{"check"}, 2, "postproc check: expected one or more .gpp files or machine files (.prp, .mac, .vmid)"},
       {{"check", "--bogus", "x.gpp"}, 2, "postproc check: unknown option --bogus"},
       {{"check", "--help"}, 0, ""},
       {{"test"}, 2, "postproc test: expected one job file"},
