@@ -157,6 +157,29 @@ TEST(Vmid, DrillCyclesBecomeDrillTypeRecords) {
   EXPECT_EQ(p.drill_cycle("Probe_Cycle_Int._Arc"), nullptr);
 }
 
+// The canonical PRP text of a VMID's model loads back to the same parameters, records and variable
+// types: the VMID is a PRP in another notation. Two things have no PRP form: the VMID's initial
+// values, and cycle parameters of a type other than numeric (a PRP declares them all numeric).
+TEST(Vmid, WritesAsAnEquivalentPrp) {
+  auto vmid = prp::load_file("prp/data/mill-4x.vmid", Units::Inch);
+  auto prp = prp::load_source(prp::write_source(vmid), "w.prp", Units::Inch);
+  EXPECT_TRUE(prp.warnings().empty());
+  ASSERT_EQ(prp.parameters().size(), vmid.parameters().size());
+  for (const auto& p : vmid.parameters()) {
+    ASSERT_NE(prp.find(p.key), nullptr) << p.key;
+    EXPECT_EQ(prp::format_value(*prp.find(p.key)), prp::format_value(p)) << p.key;
+  }
+  ASSERT_EQ(prp.all_records().size(), vmid.all_records().size());
+  for (std::size_t i = 0; i < vmid.all_records().size(); ++i)
+    EXPECT_EQ(prp::format_record(prp.all_records()[i]), prp::format_record(vmid.all_records()[i]));
+  ASSERT_EQ(prp.external_variables().size(), vmid.external_variables().size());
+  for (std::size_t i = 0; i < vmid.external_variables().size(); ++i) {
+    const auto& v = vmid.external_variables()[i];
+    EXPECT_EQ(prp.external_variables()[i].name, v.name);
+    EXPECT_EQ(prp.external_variables()[i].type, v.declared_by == "drill_type" ? prp::VarType::Numeric : v.type) << v.name;
+  }
+}
+
 TEST(Vmid, RecognisedByContentWhateverTheName) {
   const std::string body = "\xEF\xBB\xBF\n  <Machine><Controller><PrecisionDef FeedPrecision=\"2\"/></Controller></Machine>";
   auto p = prp::load_source(body, "machine.prp", Units::Metric);
