@@ -11,6 +11,8 @@ namespace {
 using V = VmidValue;
 
 constexpr VmidAttribute kAttributes[] = {
+    // <Machine>
+    {"PostProcessor", "Name", "post_processor", V::Text},
     // <Controller>
     {"PrecisionDef", "MovementPrecision", "movement_precision", V::Number},
     {"PrecisionDef", "FeedPrecision", "feed_precision", V::Integer},

@@ -47,6 +47,7 @@ TEST(VmidMap, EveryAttributeNamesADocumentedKeyOfItsKind) {
 TEST(Vmid, ControllerSettingsBecomePrpParameters) {
   auto p = prp::load_file("prp/data/mill-4x.vmid", Units::Metric);
   EXPECT_TRUE(warnings(p).empty()) << warnings(p).front();
+  EXPECT_EQ(p.text("post_processor"), "mill4x_fanuc");
   // <PrecisionDef>
   EXPECT_DOUBLE_EQ(p.numeric("movement_precision"), 4);
   EXPECT_EQ(p.integer("feed_precision"), 1);
@@ -88,7 +89,7 @@ TEST(Vmid, ControllerSettingsBecomePrpParameters) {
   EXPECT_TRUE(p.logical("arc_5x"));
   // positions name the attribute's value
   ASSERT_NE(p.find("arc_max_chord"), nullptr);
-  EXPECT_EQ(p.find("arc_max_chord")->where.line, 23u);
+  EXPECT_EQ(p.find("arc_max_chord")->where.line, 24u);
   EXPECT_EQ(p.find("arc_max_chord")->raw, "3.81");
 }
 
