@@ -11,7 +11,7 @@ namespace postproc::cli {
 std::vector<OptionSpec> engine_option_specs() {
   return {
       {"--post", "", true, "the GPP post (.gpp), required"},
-      {"--prp", "", true, "the machine parameters (.prp)"},
+      {"--prp", "", true, "the machine file: a PRP (.prp, the older .mac) or a VMID (.vmid, recognised by content)"},
       {"--include", "-I", true, "a folder where `inc` files are looked up"},
       {"--units", "", true, "metric or inch: which half of the PRP's pairs applies (default: the job's inch_system)"},
       {"--no-modal-reset", "", false, "keep modal memory across subroutine boundaries"},
@@ -76,6 +76,10 @@ EngineOptions engine_options(const Arguments& args, std::ostream* log) {
   }
   o.log = log;
   return o;
+}
+
+void print_machine_warnings(const Engine& engine, std::ostream& err) {
+  for (const auto& w : engine.machine(prp::Units::Metric).warnings()) err << w.text(true) << '\n';
 }
 
 Input Input::open(const std::string& path) {

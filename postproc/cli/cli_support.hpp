@@ -24,6 +24,10 @@ EngineOptions engine_options(const Arguments& args, std::ostream* log);
 // std::runtime_error "FILE:LINE:COLUMN: ..." on a line without a name and `=`.
 std::vector<gppl::Answer> read_answers_file(const std::string& path);
 
+// The machine file's warnings (unknown keys, ...), each once, as `file:line:col: warning: ...`. The
+// engine loads the file once per unit half; both give the same warnings, so one half is printed.
+void print_machine_warnings(const Engine& engine, std::ostream& err);
+
 // The job file, opened so that the progress bar can tell how far the reader is.
 struct Input {
   std::string path;

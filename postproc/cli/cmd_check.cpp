@@ -16,9 +16,10 @@
 namespace postproc::cli {
 namespace {
 
+// Machine files: PRP, its pre-2010 name .mac, and VMID (XML; the loader tells them apart by content).
 bool is_prp(const std::string& path) {
   auto ext = std::filesystem::path(path).extension().string();
-  return toolpath::iequals(ext, ".prp");
+  return toolpath::iequals(ext, ".prp") || toolpath::iequals(ext, ".mac") || toolpath::iequals(ext, ".vmid");
 }
 
 // Returns the number of errors.
@@ -56,7 +57,7 @@ std::size_t check_gpp(const std::string& path, const prp::MachineParameters& mac
 }
 
 int run_check(const Arguments& args, std::ostream& out, std::ostream&) {
-  if (args.positional().empty()) throw UsageError{"expected one or more .gpp or .prp files"};
+  if (args.positional().empty()) throw UsageError{"expected one or more .gpp files or machine files (.prp, .mac, .vmid)"};
   std::string units_word = args.value("--units", "metric");
   if (units_word != "metric" && units_word != "inch") throw UsageError{"--units must be metric or inch"};
   auto units = units_word == "inch" ? prp::Units::Inch : prp::Units::Metric;
@@ -87,10 +88,10 @@ int run_check(const Arguments& args, std::ostream& out, std::ostream&) {
 Subcommand check_command() {
   return {
       "check",
-      "postproc check [--prp P.prp] FILE.gpp|FILE.prp...",
+      "postproc check [--prp P.prp] FILE.gpp|FILE.prp|FILE.mac|FILE.vmid...",
       "Check posts and PRP files without running them; print every error with its position.",
       {
-          {"--prp", "", true, "the PRP whose external variables the posts may use (default: the first .prp given)"},
+          {"--prp", "", true, "the machine file (PRP or VMID) whose external variables the posts may use (default: the first one given)"},
           {"--include", "-I", true, "a folder where `inc` files are looked up"},
           {"--units", "", true, "metric (default) or inch"},
           {"--quiet", "-q", false, "print only the errors"},

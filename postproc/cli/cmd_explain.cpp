@@ -46,6 +46,7 @@ int run_explain(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (args.positional().size() != 1) throw UsageError{"expected one job file"};
   EngineOptions engine_opts = engine_options(args, &err);
   Engine engine(engine_opts);
+  print_machine_warnings(engine, err);
   Input input = Input::open(args.positional()[0]);
   OutputFiles files(".", OutputFiles::LineEnd::LF, true);
   Explainer explainer(out, std::filesystem::path(engine_opts.post).filename().string());

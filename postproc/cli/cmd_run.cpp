@@ -20,6 +20,7 @@ int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
   const std::string dialect = args.value("--dialect", "trace");
 
   Engine engine(engine_opts);
+  print_machine_warnings(engine, err);
   if (!to.to_stdout) std::filesystem::create_directories(to.directory);
   OutputFiles files(to.directory, line_end, to.to_stdout);
   auto main_path = [&](const std::string& default_name) -> std::filesystem::path {

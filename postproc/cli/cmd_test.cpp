@@ -82,6 +82,7 @@ int run_test(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (args.has("--update") && expect.empty()) throw UsageError{"--update needs --expect (a trace cannot be rewritten)"};
 
   Engine engine(engine_opts);
+  print_machine_warnings(engine, err);
   Input input = Input::open(args.positional()[0]);
   if (args.has("--update")) return update_golden(engine, input, expect, err, quiet);
 

@@ -1,6 +1,8 @@
 // The command line: dispatch, help, exit codes, and `read` printing a stream that reads back the same.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -57,7 +59,7 @@ TEST(Cli, UsageErrorsOfEverySubcommand) {
       {{"run", "--post", post, "--prp", "no.prp", "j.trace"}, 1, "no.prp:0:0: cannot open the PRP file"},
       {{"run", "--post", post, "no/such.trace"}, 1, "no/such.trace:0:0: cannot open file"},
       {{"run", "--help"}, 0, ""},
-      {{"check"}, 2, "postproc check: expected one or more .gpp or .prp files"},
+      {{"check"}, 2, "postproc check: expected one or more .gpp files or machine files (.prp, .mac, .vmid)"},
       {{"check", "--bogus", "x.gpp"}, 2, "postproc check: unknown option --bogus"},
       {{"check", "--help"}, 0, ""},
       {{"test"}, 2, "postproc test: expected one job file"},
@@ -93,6 +95,27 @@ TEST(Cli, CheckOfMissingFiles) {
   auto r = run({"check", "no.gpp"});
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(r.out, "no.gpp:1:1: error 399: Can't open file 'no.gpp'\nno.gpp: 1 error(s)\n");
+}
+
+// A machine file's warnings reach stderr once per run, although the engine loads the file for both
+// unit systems and the filters run many times.
+TEST(Cli, MachineFileWarningsArePrintedOnce) {
+  const auto dir = std::filesystem::temp_directory_path() / "postproc-cli-machine-warnings";
+  std::filesystem::create_directories(dir);
+  std::string prp = test_support::slurp("../machines/fanuc/fanuc.prp");
+  const auto endp = prp.rfind("endp");
+  ASSERT_NE(endp, std::string::npos);
+  prp.insert(endp, "spare_key = 1\n");
+  const auto path = (dir / "extra.prp").string();
+  std::ofstream(path, std::ios::binary) << prp;
+  auto r = run({"run", "--post", "../machines/fanuc/fanuc.gpp", "--prp", path, "golden/fanuc-sample/job.trace"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  const std::string warning = "warning: unknown key `spare_key`: kept as text for the post";
+  const auto first = r.err.find(warning);
+  ASSERT_NE(first, std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find(warning, first + 1), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(path + ":"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Cli, HelpListsCommandsAndOptions) {
