@@ -115,7 +115,8 @@ struct ExternalVariable {
   std::string name;  // spelled as first declared
   VarType type = VarType::Numeric;
   // Initial value (typed declarations: 0, FALSE or ''), or nullopt: declared but inactive until a
-  // command of the toolpath sets it (cycle parameters such as `Delay`).
+  // command of the toolpath sets it (PRP cycle parameters such as `Delay`). Cycle parameters
+  // (declared_by "drill_type") stay inactive even with a value (a VMID's <CycleParams> Value).
   std::optional<toolpath::Value> initial;
   std::string declared_by;  // "options", "job_opt_type", "drill_type", ... (VMID: <MachineParams> ->
                             // "options", per-job-type lists -> "job_opt_type", <CycleParams> -> "drill_type")

@@ -287,21 +287,28 @@ private:
       std::string name;
       VarType type;
       toolpath::SourcePosition where;
+      toolpath::Value initial;
     };
     std::vector<CycleParam> params;
     for (pugi::xml_node param : node.child("CycleParams").children()) {
       if (param.type() != pugi::node_element || !param.attribute("GppName")) continue;
       auto p = gpp_name(param);
       if (!p) return;
-      params.push_back({*p, param_type(param), at(param.attribute("GppName"), param)});
+      const VarType type = param_type(param);
+      pugi::xml_attribute value = param.attribute("Value");
+      if (!value || !*value.value()) value = param.attribute("DefaultValue");
+      auto initial = user_value(type, param.attribute("ValueType").value(), value.value(), at(value, param));
+      if (!initial) return;
+      params.push_back({*p, type, at(param.attribute("GppName"), param), std::move(*initial)});
       r.params.push_back(*p);
     }
     r.raw = fmt::format("{} {} {}", r.name, r.base, *r.flag ? "Y" : "N");
     for (const auto& p : params) r.raw += " " + p.name;
     if (!loader_.add_record(std::move(r))) return;
-    // Cycle parameters are inactive until the toolpath's @drill sets them, as in a PRP.
+    // Cycle parameters hold the VMID's value (the job dialog's default) but stay inactive until the
+    // toolpath's @drill sets them, as in a PRP.
     for (auto& p : params)
-      if (!loader_.declare(p.name, p.type, std::nullopt, "drill_type", p.where)) break;
+      if (!loader_.declare(p.name, p.type, std::move(p.initial), "drill_type", p.where)) break;
   }
 
   Loader& loader_;

@@ -93,13 +93,12 @@ public:
     for (const auto* cycle : engine.machine().records("drill_type"))
       for (const auto& p : cycle->params) drill_parameters_.push_back(p);
     // PRP external variables start with their declared value, or inactive until a command sets them.
+    // Cycle parameters are inactive whatever their value (a VMID gives them the dialog's default).
     for (const auto& v : engine.machine().external_variables()) {
       auto id = interpreter_.find_variable(v.name);
       if (!id) continue;
-      if (v.initial)
-        interpreter_.assign(*id, binding_.convert(*v.initial, v.type == prp::VarType::String));
-      else
-        interpreter_.set_active(*id, false);
+      if (v.initial) interpreter_.assign(*id, binding_.convert(*v.initial, v.type == prp::VarType::String));
+      if (!v.initial || v.declared_by == "drill_type") interpreter_.set_active(*id, false);
     }
   }
 

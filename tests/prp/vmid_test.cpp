@@ -147,11 +147,13 @@ TEST(Vmid, DrillCyclesBecomeDrillTypeRecords) {
   EXPECT_EQ(got, (std::vector<std::string>{"G81 DRILLING Y", "G82 F_DRILL N dwell", "CYCLE83 PECK Y C83_VARI C83_FDEP",
                                            "G86 BORING Y"}));
   ASSERT_NE(p.drill_cycle("cycle83"), nullptr);
-  // Cycle parameters wait for the toolpath, as in a PRP; their type follows ValueType.
+  // Cycle parameters wait for the toolpath, as in a PRP (the engine keeps every "drill_type"
+  // variable inactive); until then they hold the VMID's Value. Their type follows ValueType.
   const prp::ExternalVariable* vari = external(p, "C83_VARI");
   ASSERT_NE(vari, nullptr);
   EXPECT_EQ(vari->type, prp::VarType::Integer);
-  EXPECT_FALSE(vari->initial.has_value());
+  ASSERT_TRUE(vari->initial.has_value());
+  EXPECT_EQ(vari->initial->as_number(), 0);
   EXPECT_EQ(vari->declared_by, "drill_type");
   EXPECT_EQ(external(p, "dwell")->type, prp::VarType::Numeric);
   // Probe cycles are not drill cycles: skipped.
