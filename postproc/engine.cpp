@@ -321,6 +321,7 @@ Engine::Engine(EngineOptions options) : options_(std::move(options)) {
   gppl::CompileOptions compile;
   compile.host_variables = host_variables(enums, machine());
   compile.include_paths = options_.include_paths;
+  compile.undeclared_from_job = true;  // a name nothing declares is the job's, or an error where used
   program_ = gppl::compile_file(options_.post, compile);
 }
 
