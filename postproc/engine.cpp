@@ -90,6 +90,7 @@ public:
       command_names_ = std::array<gppl::VariableId, 3>{*prev_command_, *current_command_, *next_command_};
     for (const auto* cycle : engine.machine().records("drill_type"))
       for (const auto& p : cycle->params) drill_parameters_.push_back(p);
+    fill_run_values();
     // PRP external variables start with their declared value, or inactive until a command sets them.
     for (const auto& v : engine.machine().external_variables()) {
       auto id = interpreter_.find_variable(v.name);
@@ -260,11 +261,26 @@ private:
     if (reset && command_info.calls_subroutine) interpreter_.reset_change_memory();
   }
 
+  // System variables the run knows before the job says anything (docs/system-variables.md, source
+  // "run"); a command of the job that carries one assigns it again, so the trace wins.
+  void fill_run_values() {
+    const std::filesystem::path job(options_.input_name);
+    set_string(interpreter_.find_variable("part_name"), input_stem());
+    set_string(interpreter_.find_variable("part_full_name"), (job.parent_path() / job.stem()).string());
+    set_string(interpreter_.find_variable("path_part"), job.parent_path().string());
+    set_string(interpreter_.find_variable("pre_processor"), std::filesystem::path(engine_.options().post).stem().string());
+  }
+
   // Names the main file, and completes the subroutine numbers the stream left out.
   void start_of_file(toolpath::Command& command) {
     const toolpath::Value* name = command.find("g_file_name");
     std::string base = name && !name->text.empty() ? name->text : input_stem();
     name_main_file(default_main_name(base, engine_.file_extension()));
+    // The trace's own full_g_file_name, when it has one, is assigned after this and wins.
+    if (!options_.main_path) return;
+    std::error_code ignored;
+    const auto full = std::filesystem::absolute(files_.main_path(), ignored);
+    set_string(interpreter_.find_variable("full_g_file_name"), full.string());
     if (!command.find("first_user_proc") && options_.reopen) derive_procedure_numbers(command);
   }
 
