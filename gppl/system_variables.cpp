@@ -21,7 +21,17 @@ using enum TypeBasis;
 constexpr SystemVariable kSystem[] = {
 #define SYSVAR(name, type, access, source, rows, columns, dflt, basis, meaning) \
   {name, type, access, source, rows, columns, dflt, basis, meaning},
+#define JOBTYPE(value)
 #include "gppl/system_variables.inc"
+#undef JOBTYPE
+#undef SYSVAR
+};
+
+constexpr std::string_view kJobTypes[] = {
+#define SYSVAR(name, type, access, source, rows, columns, dflt, basis, meaning)
+#define JOBTYPE(value) value,
+#include "gppl/system_variables.inc"
+#undef JOBTYPE
 #undef SYSVAR
 };
 
@@ -35,6 +45,7 @@ std::string folded(std::string_view s) {
 }  // namespace
 
 std::span<const SystemVariable> system_variables() { return kSystem; }
+std::span<const std::string_view> job_type_values() { return kJobTypes; }
 
 const SystemVariable* find_system_variable(std::string_view name) {
   static const auto index = [] {

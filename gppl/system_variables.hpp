@@ -36,6 +36,8 @@ struct SystemVariable {
 };
 
 std::span<const SystemVariable> system_variables();
+// The job_type values SolidCAM's list names ('3-d drill', 'pocket', ...): text, not variables.
+std::span<const std::string_view> job_type_values();
 // Case-insensitive; nullptr when the name is no system variable.
 const SystemVariable* find_system_variable(std::string_view name);
 // The default as a value of the variable's type.
