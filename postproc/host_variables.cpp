@@ -54,7 +54,8 @@ std::vector<gppl::HostVariable> job_variables(toolpath::CommandSource& job) {
   toolpath::Command command;
   while (job.next(command))
     for (const auto& p : command.parameters)
-      if (seen.insert(lower(p.name)).second) out.push_back({p.name, gppl_type(p.value.kind), false, {}});
+      if (p.name.find('<') == std::string::npos && seen.insert(lower(p.name)).second)  // not array elements
+        out.push_back({p.name, gppl_type(p.value.kind), false, {}});
   return out;
 }
 

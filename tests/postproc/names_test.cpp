@@ -106,6 +106,23 @@ TEST_F(Names, RunFillsWhatItKnows) {
   EXPECT_EQ(ran.out, "part7 fill \npart7\nFROM-TRACE\n");
 }
 
+// Array system variables are filled element by element from the trace, in block and inline form.
+TEST_F(Names, ArraysFillFromTheTrace) {
+  const std::string post = write("arrays.gpp",
+                                 "@call_prms\n  {nb, 'P', call_prms<<1>>, ' ', call_prms<<2>>}\nendp\n"
+                                 "@wc_chng_condition\n  {nb, chng_cond<<1,1>>, '=', chng_cond<<3,1>>}\nendp\n");
+  const std::string job = write("arrays.trace",
+                                "@call_prms\nlabel : 1\ncall_prms_num : 2\ncall_prms<<1>> : 5.\ncall_prms<<2>> : 7\n"
+                                "(1)@wc_chng_condition==> chng_cond_num:1 chng_cond<<1,1>>:'power' chng_cond<<3,1>>:'12'\n");
+  auto ran = run_cli({"run", "-q", "--post", post, job});
+  EXPECT_EQ(ran.code, 0) << ran.err;
+  EXPECT_EQ(ran.out, "P5. 7.\npower=12\n");
+  const std::string bad = write("bad.trace", "@call_prms\ncall_prms<<101>> : 5.\n");
+  ran = run_cli({"run", "-q", "--post", post, bad});
+  EXPECT_EQ(ran.code, 1);
+  EXPECT_NE(ran.err.find("index 1 of call_prms is 101, outside 1..100"), std::string::npos) << ran.err;
+}
+
 // Every name of SolidCAM's list passes `postproc check` in a post that prints it.
 TEST_F(Names, EveryListedNamePassesCheck) {
   std::ifstream in("gppl/data/solidcam-system-variables.txt");
