@@ -25,6 +25,8 @@ Type type_of(std::string_view word) {
 // hold numbers (integer, numeric and logical convert into one another, spec 4.5).
 bool same_kind(Type a, Type b) { return (a == Type::String) == (b == Type::String); }
 
+bool inferred(TypeBasis b) { return b == TypeBasis::Usage || b == TypeBasis::Naming || b == TypeBasis::Guess; }
+
 // PI, TRUE and FALSE (the manual's variables with special values) cannot be redeclared at all.
 bool special_value(const GlobalVariable& g) {
   const SystemVariable* s = g.group == Group::System ? find_system_variable(g.name) : nullptr;
@@ -55,6 +57,9 @@ void Compiler::declare_builtins() {
     if (s.columns > 0) v.dimensions.push_back(s.columns);
     for (int d : v.dimensions) v.cell_count *= std::uint32_t(d);
     v.initial = default_value(s);
+    // An inferred type of a value the job supplies is only the default's: the job's first value
+    // types the variable (a trace that sends text where we guessed a number is still right).
+    v.typed = s.rows > 0 || !(inferred(s.basis) && (s.source == VariableSource::Trace || s.source == VariableSource::Machine));
     add_global(std::move(v));
   }
   for (const HostVariable& h : options_.host_variables) {

@@ -106,6 +106,16 @@ TEST_F(Names, RunFillsWhatItKnows) {
   EXPECT_EQ(ran.out, "part7 fill \npart7\nFROM-TRACE\n");
 }
 
+// An inferred type gives way to the job's value: `stock_type` is guessed numeric, the trace sends text.
+TEST_F(Names, InferredTypesFollowTheJob) {
+  const std::string post = write("stock.gpp", "@start_of_file\n  if stock_type eq 'box'\n    {nb, 'box'}\n  endif\nendp\n");
+  const std::string job = write("stock.trace", "@start_of_file\nstock_type : 'box'\n");
+  EXPECT_EQ(run_cli({"check", "-q", post}).code, 0);
+  auto ran = run_cli({"run", "-q", "--post", post, job});
+  EXPECT_EQ(ran.code, 0) << ran.err;
+  EXPECT_EQ(ran.out, "box\n");
+}
+
 // Array system variables are filled element by element from the trace, in block and inline form.
 TEST_F(Names, ArraysFillFromTheTrace) {
   const std::string post = write("arrays.gpp",
