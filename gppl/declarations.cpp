@@ -25,7 +25,7 @@ Type type_of(std::string_view word) {
 // hold numbers (integer, numeric and logical convert into one another, spec 4.5).
 bool same_kind(Type a, Type b) { return (a == Type::String) == (b == Type::String); }
 
-bool inferred(TypeBasis b) { return b == TypeBasis::Usage || b == TypeBasis::Naming || b == TypeBasis::Guess; }
+bool inferred(TypeBasis b) { return b != TypeBasis::Manual && b != TypeBasis::Catalogue; }
 
 // PI, TRUE and FALSE (the manual's variables with special values) cannot be redeclared at all.
 bool special_value(const GlobalVariable& g) {

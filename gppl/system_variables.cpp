@@ -84,6 +84,7 @@ std::string_view name_of(TypeBasis basis) {
     case TypeBasis::Manual: return "manual";
     case TypeBasis::Catalogue: return "catalogue";
     case TypeBasis::Usage: return "usage";
+    case TypeBasis::Observed: return "observed";
     case TypeBasis::Naming: return "naming";
     case TypeBasis::Guess: return "guess";
   }

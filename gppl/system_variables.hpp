@@ -21,7 +21,7 @@ enum class VariableSource : std::uint8_t {
 };
 
 // What a system variable's type rests on (the doc says which types are inferred).
-enum class TypeBasis : std::uint8_t { Manual, Catalogue, Usage, Naming, Guess };
+enum class TypeBasis : std::uint8_t { Manual, Catalogue, Usage, Observed, Naming, Guess };
 
 struct SystemVariable {
   std::string_view name;  // as SolidCAM's list spells it (names ignore case)

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "gppl/gppl.hpp"
+#include "gppl/system_variables.hpp"
 #include "postproc/directive.hpp"
 #include "postproc/engine_sink.hpp"
 #include "postproc/enumerations.hpp"
@@ -83,6 +84,11 @@ public:
     interpreter_.set_limits(engine.options().max_loop_iterations, engine.options().max_call_depth);
     for (const auto& c : enums_.constants())
       if (auto id = interpreter_.find_variable(c.name)) interpreter_.assign(*id, gppl::Value::of_integer(c.code));
+    // Integer constants of the system table are words a trace sends (tool types: `tool_type:face_mill`):
+    // each holds the code that word gets, so `tool_type eq face_mill` compares codes.
+    for (const auto& v : gppl::system_variables())
+      if (v.source == gppl::VariableSource::Constant && v.type == gppl::Type::Integer)
+        if (auto id = interpreter_.find_variable(v.name)) interpreter_.assign(*id, gppl::Value::of_integer(enums_.code(v.name)));
     prev_command_ = interpreter_.find_variable("prev_command");
     current_command_ = interpreter_.find_variable("current_command");
     next_command_ = interpreter_.find_variable("next_command");

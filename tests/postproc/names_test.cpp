@@ -116,6 +116,18 @@ TEST_F(Names, InferredTypesFollowTheJob) {
   EXPECT_EQ(ran.out, "box\n");
 }
 
+// Tool-type words of the trace compare equal to the system constants of the same name.
+TEST_F(Names, ToolTypeWordsAreConstants) {
+  const std::string post = write("tools.gpp",
+                                 "@change_tool\n  if tool_type eq face_mill\n    {nb, 'face'}\n  else\n    {nb, 'other'}\n"
+                                 "  endif\nendp\n");
+  const std::string job = write("tools.trace", "@change_tool\ntool_type : face_mill\n@change_tool\ntool_type : END_MILL\n");
+  EXPECT_EQ(run_cli({"check", "-q", post}).code, 0);
+  auto ran = run_cli({"run", "-q", "--post", post, job});
+  EXPECT_EQ(ran.code, 0) << ran.err;
+  EXPECT_EQ(ran.out, "face\nother\n");
+}
+
 // Array system variables are filled element by element from the trace, in block and inline form.
 TEST_F(Names, ArraysFillFromTheTrace) {
   const std::string post = write("arrays.gpp",
