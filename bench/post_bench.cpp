@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "bench/synthetic_job.hpp"
-#include "postproc/engine.hpp"
+#include "postproc/engine/engine.hpp"
 #include "prp/prp.hpp"
 #include "toolpath/trace_reader.hpp"
 #include "toolpath/trace_writer.hpp"

@@ -28,6 +28,7 @@ Builtin fn(std::string_view name, Type result, std::vector<Type> parameters, Imp
 std::vector<Builtin> numeric_functions();
 std::vector<Builtin> string_functions();
 std::vector<Builtin> logical_functions();
+std::vector<Builtin> array_functions();
 
 inline constexpr double max_numeric = 1e300;         // spec 3.1
 inline constexpr double integral_tolerance = 1e-9;   // spec 4.5: 2.9999999999 is 3

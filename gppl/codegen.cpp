@@ -55,6 +55,7 @@ void Compiler::close_blocks(std::vector<Block>& blocks, SourcePos at) {
                                          loop ? "ENDW" : "ENDIF", loop ? "WHILE" : "IF", b.pos.line);
     errors_.push_back(Error(int(ErrorCode::MissingEndif), program_->position(at), text));
     program_->code[b.jump].a = std::uint32_t(program_->code.size());
+    for (std::uint32_t exit : b.exits) program_->code[exit].a = std::uint32_t(program_->code.size());
     blocks.pop_back();
   }
 }
@@ -88,7 +89,7 @@ void Compiler::compile_line(const ParsedLine& line, Context& ctx, std::vector<Bl
     case LineKind::If: {
       if (depth(false) >= kMaxNesting) error(ErrorCode::TooComplex, pos, {}, "IF statements nest deeper than 8 levels");
       const std::uint32_t cond = expression(*st.children[0], ctx);
-      blocks.push_back(Block{LineKind::If, emit(OpCode::JumpIfFalse, pos, 0, cond), 0, pos, {}});
+      blocks.push_back(Block{LineKind::If, emit(OpCode::JumpIfFalse, pos, 0, cond), 0, pos, {}, {}});
       break;
     }
     case LineKind::Else:
@@ -109,15 +110,18 @@ void Compiler::compile_line(const ParsedLine& line, Context& ctx, std::vector<Bl
               blocks.empty() ? "ENDIF without an open IF"
                              : fmt::format("ENDIF inside the WHILE at line {} (ENDW missing?)", blocks.back().pos.line));
       } else {
-        program_->code[blocks.back().jump].a = std::uint32_t(program_->code.size());
+        const auto after = std::uint32_t(program_->code.size());
+        program_->code[blocks.back().jump].a = after;
+        for (std::uint32_t exit : blocks.back().exits) program_->code[exit].a = after;
         blocks.pop_back();
       }
       break;
+    case LineKind::Elseif: elseif_statement(st, ctx, pos, blocks); break;
     case LineKind::While: {
       if (depth(true) >= kMaxNesting) error(ErrorCode::TooComplex, pos, {}, "WHILE loops nest deeper than 8 levels");
       const auto head = std::uint32_t(program_->code.size());
       const std::uint32_t cond = expression(*st.children[0], ctx);
-      blocks.push_back(Block{LineKind::While, emit(OpCode::LoopIfFalse, pos, 0, cond), head, pos, {}});
+      blocks.push_back(Block{LineKind::While, emit(OpCode::LoopIfFalse, pos, 0, cond), head, pos, {}, {}});
       break;
     }
     case LineKind::Endw:
@@ -160,9 +164,12 @@ void Compiler::compile_line(const ParsedLine& line, Context& ctx, std::vector<Bl
       break;
     }
     case LineKind::Generate: generate(st, ctx, pos); break;
+    case LineKind::Input: input_statement(st, ctx, pos); break;
+    case LineKind::Print: print_statement(st, ctx, pos); break;
     case LineKind::Trace: {
-      const std::uint32_t text = constant(Value::of_string(literal_text(*st.children[0], ctx.file)), pos);
-      emit(OpCode::Trace, pos, text, expression(*st.children[1]->children[0], ctx));
+      // The instruction holds the index of the constant, not of its node.
+      const std::uint32_t node = constant(Value::of_string(literal_text(*st.children[0], ctx.file)), pos);
+      emit(OpCode::Trace, pos, program_->nodes[node].a, expression(*st.children[1]->children[0], ctx));
       break;
     }
     case LineKind::Stop: {
@@ -292,7 +299,8 @@ std::uint32_t Compiler::call_node(const SyntaxNode& n, Context& ctx) {
     const auto& list = n.children[1]->children;
     for (std::size_t i = 0; i < list.size(); ++i) {
       const SyntaxNode& arg = *list[i];
-      args.push_back(expression(*arg.children[0], ctx));
+      const bool shape = i == 0 && node.function->array_argument;  // adims, alen, asize
+      args.push_back(shape ? array_argument(*arg.children[0], ctx) : expression(*arg.children[0], ctx));
       if (arg.children.size() < 2) continue;
       if (i != 0 || !node.function->format_argument) {
         error(ErrorCode::Unrecognized, node_pos(*arg.children[1], ctx.file), {},

@@ -35,6 +35,7 @@ private:
     std::uint32_t head = 0;  // While: the loop test
     SourcePos pos;
     std::vector<std::uint32_t> breaks;
+    std::vector<std::uint32_t> exits;  // If: the jumps to ENDIF at the end of each ELSEIF branch
   };
   struct Context {
     std::uint32_t procedure = 0;
@@ -67,6 +68,12 @@ private:
   std::uint32_t call_node(const SyntaxNode& n, Context& ctx);
   std::uint32_t reference(const SyntaxNode& variable, Context& ctx, bool target);
   void generate(const SyntaxNode& n, Context& ctx, SourcePos pos);
+  // codegen_extensions.cpp: what real posts use beyond the manual (input, print, elseif, adims...)
+  void input_statement(const SyntaxNode& st, Context& ctx, SourcePos pos);
+  void print_statement(const SyntaxNode& st, Context& ctx, SourcePos pos);
+  bool message_item(const SyntaxNode& n, Context& ctx);  // false (and an error) for start_line/end_line
+  void elseif_statement(const SyntaxNode& st, Context& ctx, SourcePos pos, std::vector<Block>& blocks);
+  std::uint32_t array_argument(const SyntaxNode& arg, Context& ctx);
   void generate_item(const SyntaxNode& n, Context& ctx, bool in_group);
   void collect_refs(std::uint32_t node, std::vector<std::uint32_t>& out) const;
   std::optional<LineFunction> line_function_of(const SyntaxNode& operand) const;

@@ -92,6 +92,14 @@ Flow Interpreter::State::execute(std::uint32_t procedure) {
         ++pc;
         break;
       }
+      case OpCode::Input:
+        input(in.a);
+        ++pc;
+        break;
+      case OpCode::Print:
+        print(in.a, in.b);
+        ++pc;
+        break;
       case OpCode::Abort: return Flow::Abort;
       case OpCode::Exit: return Flow::Exit;
       case OpCode::Return: return Flow::Normal;

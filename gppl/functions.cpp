@@ -25,13 +25,15 @@ struct Table {
 const Table& table() {
   static const Table t = [] {
     std::vector<Builtin> all = builtin::numeric_functions();
-    for (auto* group : {builtin::string_functions, builtin::logical_functions})
+    for (auto* group : {builtin::string_functions, builtin::logical_functions, builtin::array_functions})
       for (auto& b : group()) all.push_back(std::move(b));
     Table t;
     for (auto& b : all) {
       FunctionSignature& s = b.signature;
       if (s.name == "abs" || s.name == "square" || s.name == "mod") s.integer_if_integer_args = true;
       if (s.name == "replace") s.min_args = 3;
+      if (s.name == "instr") s.min_args = 2;
+      if (s.name == "adims" || s.name == "alen" || s.name == "asize") s.array_argument = true;
       if (s.name == "tostr") s.min_args = 1, s.format_argument = true;
       if (s.name == "date" || s.name == "time") s.no_parentheses = true;
       t.signatures.push_back(std::move(s));

@@ -31,6 +31,10 @@ struct FunctionSignature {
   bool format_argument = false;
   // date, time: written without parentheses (a lenient parser also accepts `date()`).
   bool no_parentheses = false;
+  // adims, alen, asize: the first argument names an array variable (without indices). The
+  // compiler passes its dimension sizes as a string ("3,4"; "" for a scalar), since they are
+  // known when the post is compiled.
+  bool array_argument = false;
 };
 
 // Integers hold ±999 999 999 (spec 3.1); integer results beyond it raise error 410.

@@ -148,6 +148,15 @@ Value f_cos(const FunctionSignature& f, Args a) { return numeric_result(f, cos_d
 Value f_tan(const FunctionSignature& f, Args a) { return numeric_result(f, tan_degrees(number(a[0]))); }
 Value f_dist(const FunctionSignature& f, Args a) { return numeric_result(f, std::hypot(number(a[0]), number(a[1]))); }
 Value f_exp(const FunctionSignature& f, Args a) { return numeric_result(f, std::exp(number(a[0]))); }
+
+// The angle in [0, 360): norm360(-90) is 270, norm360(720) is 0.
+Value f_norm360(const FunctionSignature& f, Args a) {
+  const double x = number(a[0]);
+  double r = std::fmod(x, 360.0);
+  if (r < 0) r += 360.0;
+  r = clean(r, x);
+  return numeric_result(f, r >= 360.0 ? 0.0 : r);
+}
 Value f_todeg(const FunctionSignature& f, Args a) { return numeric_result(f, to_degrees(number(a[0]))); }
 Value f_torad(const FunctionSignature& f, Args a) { return numeric_result(f, to_radians(number(a[0]))); }
 
@@ -171,7 +180,8 @@ std::vector<Builtin> numeric_functions() {
       fn("asin", N, {N}, f_asin),       fn("atan", N, {N}, f_atan),       fn("atan2", N, {N, N}, f_atan2),
       fn("cos", N, {N}, f_cos),         fn("dist", N, {N, N}, f_dist),    fn("exp", N, {N}, f_exp),
       fn("frac", N, {N}, f_frac),       fn("int", I, {N}, f_int),         fn("log", N, {N}, f_log),
-      fn("log10", N, {N}, f_log),       fn("mod", N, {N, N}, f_mod),      fn("pow", N, {N, N}, f_pow),
+      fn("log10", N, {N}, f_log),       fn("mod", N, {N, N}, f_mod),      fn("norm360", N, {N}, f_norm360),
+      fn("pow", N, {N, N}, f_pow),
       fn("round", N, {N, N}, f_round),  fn("round2val", N, {N, N}, f_round2val),
       fn("sign", I, {N}, f_sign),       fn("sin", N, {N}, f_sin),         fn("sqrt", N, {N}, f_sqrt),
       fn("square", N, {N}, f_square),   fn("tan", N, {N}, f_tan),         fn("todeg", N, {N}, f_todeg),

@@ -35,11 +35,15 @@ Value repeated(const FunctionSignature& f, std::string_view s, std::int64_t coun
 Value f_dup(const FunctionSignature& f, Args a) { return repeated(f, text(a[0]), count_argument(f, a[1], "the count")); }
 Value f_space(const FunctionSignature& f, Args a) { return repeated(f, " ", count_argument(f, a[0], "the length")); }
 
-Value f_instr(const FunctionSignature&, Args a) {
+// instr(s, sub [, start]): the search begins at position `start` (1-based, at least 1); a start
+// past the end finds nothing. The result counts from the beginning of `s`.
+Value f_instr(const FunctionSignature& f, Args a) {
   const std::string& s = text(a[0]);
   const std::string& sub = text(a[1]);
-  if (sub.empty()) return Value::of_integer(0);
-  std::size_t at = s.find(sub);
+  const std::int64_t start = a.size() > 2 ? whole(a[2]) : 1;
+  if (start < 1) out_of_range(f, fmt::format("the start position {} is below 1", start));
+  if (sub.empty() || start > static_cast<std::int64_t>(s.size())) return Value::of_integer(0);
+  std::size_t at = s.find(sub, static_cast<std::size_t>(start - 1));
   return Value::of_integer(at == std::string::npos ? 0 : static_cast<std::int64_t>(at) + 1);
 }
 
@@ -181,7 +185,7 @@ Value f_time(const FunctionSignature&, Args) {
 std::vector<Builtin> string_functions() {
   constexpr Type I = Type::Integer, N = Type::Numeric, S = Type::String;
   return {
-      fn("date", S, {}, f_date),        fn("dup", S, {S, I}, f_dup),      fn("instr", I, {S, S}, f_instr),
+      fn("date", S, {}, f_date),        fn("dup", S, {S, I}, f_dup),      fn("instr", I, {S, S, I}, f_instr),
       fn("left", S, {S, I}, f_left),    fn("lower", S, {S}, f_lower),     fn("replace", S, {S, S, S, I}, f_replace),
       fn("rev", S, {S}, f_rev),         fn("right", S, {S, I}, f_right),  fn("space", S, {I}, f_space),
       fn("strlen", I, {S}, f_strlen),   fn("substr", S, {S, I, I}, f_substr), fn("time", S, {}, f_time),

@@ -137,6 +137,21 @@ public:
 // Throws Error (without a position) when the format is invalid.
 std::string format_integer(std::int64_t value, std::string_view format);
 
+// An answer for the `input` statements that read variable `name` (runs are not interactive).
+// `value` is text, converted to that variable's type; `source` says where it came from, for
+// messages ("--answer tool=3", "answers.txt:4").
+struct Answer {
+  std::string name;
+  std::string value;
+  std::string source;
+};
+
+// Checks answers against the post's `input` statements. Throws Errors (at the input statement,
+// naming the answer's source) when a value does not convert to the variable's type: 386 for a
+// number, 420 for a logical, 410 for an integer beyond the range. Returns one warning per answer
+// that no `input` statement reads. A name answered twice takes the last answer.
+std::vector<std::string> check_answers(const Program& program, std::span<const Answer> answers);
+
 enum class ChangeOverride : std::uint8_t { Compute, ForceChanged, ForceUnchanged };
 
 // How a procedure run ended. `exit` ends the current P-code; `abort` ends the whole run.
@@ -191,6 +206,11 @@ public:
 
   // Trace output (`trace "list":level` statements) goes here; nullptr (default) discards it.
   void set_trace_stream(std::ostream* trace);
+  // The run log: `print` messages and one line per `input` statement (prompt, variable, value
+  // and where the value came from). nullptr (default) discards them.
+  void set_log_stream(std::ostream* log);
+  // Answers for the `input` statements (see check_answers, whose errors it throws).
+  void set_answers(std::span<const Answer> answers);
   // A toolpath command the post has no procedure for: traced at nesting level 0 (spec 8.2).
   void trace_unhandled(std::string_view command);
   // Limits that stop a runaway post: loop iterations per P-code and call depth (error 405).

@@ -34,6 +34,7 @@ struct kw_string : kw<TAO_PEGTL_ISTRING("string")> {};
 struct kw_if : kw<TAO_PEGTL_ISTRING("if")> {};
 struct kw_then : kw<TAO_PEGTL_ISTRING("then")> {};
 struct kw_else : kw<TAO_PEGTL_ISTRING("else")> {};
+struct kw_elseif : kw<TAO_PEGTL_ISTRING("elseif")> {};
 struct kw_endif : kw<TAO_PEGTL_ISTRING("endif")> {};
 struct kw_while : kw<TAO_PEGTL_ISTRING("while")> {};
 struct kw_endw : kw<TAO_PEGTL_ISTRING("endw")> {};
@@ -61,12 +62,16 @@ struct kw_nb : kw<TAO_PEGTL_ISTRING("nb")> {};
 struct kw_nl : kw<TAO_PEGTL_ISTRING("nl")> {};
 struct kw_col : kw<TAO_PEGTL_ISTRING("col")> {};
 struct kw_colrel : kw<TAO_PEGTL_ISTRING("colrel")> {};
+// `input` and `print` start a statement only as the first word of a line; a variable may still be
+// called so (the line classifier tells `print = 1` apart).
+struct kw_input : kw<TAO_PEGTL_ISTRING("input")> {};
+struct kw_print : kw<TAO_PEGTL_ISTRING("print")> {};
 
 // Words that can never name a variable. nb/nl/col/colrel are keywords only inside `{ }`, and
 // `inc` only at the start of a line followed by a string (a variable may be called `inc`).
 struct reserved
     : p::sor<kw_global, kw_local, kw_integer, kw_numeric, kw_logical, kw_string, kw_if, kw_then, kw_else,
-             kw_endif, kw_while, kw_endw, kw_call, kw_endp, kw_trace, kw_abort, kw_exit, kw_break, kw_return,
+             kw_elseif, kw_endif, kw_while, kw_endw, kw_call, kw_endp, kw_trace, kw_abort, kw_exit, kw_break, kw_return,
              kw_and, kw_or, kw_not, kw_eq, kw_ne, kw_lt, kw_le, kw_gt, kw_ge, kw_change, kw_active> {};
 
 struct identifier : p::seq<p::not_at<reserved>, ident_first, p::star<ident_other>> {};
@@ -156,15 +161,17 @@ struct gen_nl : kw_nl {};
 struct gen_col : p::seq<kw_col, ws, open_paren, ws, p::must<expr>, ws, p::must<close_paren>> {};
 struct gen_colrel : p::seq<kw_colrel, ws, open_paren, ws, p::must<expr>, ws, p::must<close_paren>> {};
 struct gen_operand : p::sor<string_literal, num_literal, int_literal, func_call, variable, paren_expr> {};
-struct gen_value : p::seq<p::not_at<p::sor<kw_nb, kw_nl>>, gen_operand, p::opt<ws, format_spec>> {};
+// Items joined by `+` (string concatenation in real posts: `'CYCLE832(' + s + ',1)'`).
+struct gen_plus : p::one<'+'> {};
+struct gen_sum : p::seq<gen_operand, p::star<ws, gen_plus, ws, p::must<gen_operand>>> {};
+struct gen_value : p::seq<p::not_at<p::sor<kw_nb, kw_nl>>, gen_sum, p::opt<ws, format_spec>> {};
 struct close_group : p::one<']'> {};
 struct close_generate : p::one<'}'> {};
+// Commas are optional, and real posts also write a leading or a doubled one: `{,x}`, `{a,,b}`.
 struct gen_group
-    : p::seq<p::one<'['>, ws, p::star<p::sor<gen_colrel, gen_col, gen_value>, ws, p::opt<comma, ws>>,
-             p::must<close_group>> {};
+    : p::seq<p::one<'['>, ws, p::star<p::sor<comma, gen_colrel, gen_col, gen_value>, ws>, p::must<close_group>> {};
 struct gen_item : p::sor<gen_nb, gen_nl, gen_colrel, gen_col, gen_group, gen_value> {};
-struct generate
-    : p::seq<p::one<'{'>, ws, p::star<gen_item, ws, p::opt<comma, ws>>, p::must<close_generate>> {};
+struct generate : p::seq<p::one<'{'>, ws, p::star<p::sor<comma, gen_item>, ws>, p::must<close_generate>> {};
 
 // --- statements (5.1) ------------------------------------------------------------------------
 struct type_name : p::sor<kw_integer, kw_numeric, kw_logical, kw_string> {};
@@ -180,6 +187,7 @@ struct assign_op : p::one<'='> {};
 struct assignment : p::seq<variable, ws, p::must<assign_op>, ws, p::must<expr>> {};
 struct attr_assignment : p::seq<attribute, ws, p::must<assign_op>, ws, p::must<expr>> {};
 struct if_statement : p::seq<kw_if, ws, p::must<expr>, p::opt<ws, kw_then>> {};
+struct elseif_statement : p::seq<kw_elseif, ws, p::must<expr>, p::opt<ws, kw_then>> {};
 struct else_statement : kw_else {};
 struct endif_statement : kw_endif {};
 struct while_statement : p::seq<kw_while, ws, p::must<expr>> {};
@@ -189,6 +197,12 @@ struct call_statement : p::seq<kw_call, ws, p::must<proc_name>, p::opt<ws, argum
 struct trace_level : p::seq<expr> {};
 struct trace_statement
     : p::seq<kw_trace, ws, p::must<string_literal>, ws, p::must<p::one<':'>>, ws, p::must<trace_level>> {};
+// `input 'prompt' var` / `Input "prompt", var`; `print item, ...` (items: expressions, `:format`).
+struct input_prompt : p::seq<expr> {};
+struct input_target : p::seq<variable> {};
+struct input_statement
+    : p::seq<kw_input, ws, p::must<input_prompt>, ws, p::opt<comma, ws>, p::must<input_target>> {};
+struct print_statement : p::seq<kw_print, ws, p::star<p::sor<comma, argument>, ws>> {};
 struct stop_statement : p::sor<kw_abort, kw_exit, kw_break, kw_return> {};
 struct include_statement : p::seq<kw_inc, ws, p::must<string_literal>> {};
 struct parameter : p::seq<type_name, ws, p::must<identifier>> {};
@@ -208,15 +222,16 @@ struct selector
           p::parse_tree::store_content::on<identifier, function_name, proc_name, num_literal, int_literal,
                                            string_literal, op_or, op_and, op_not, op_rel, op_add, op_mul, op_pow,
                                            op_sign, type_name, dimension, scope, stop_statement, kw_change,
-                                           kw_active, gen_nb, gen_nl>,
+                                           kw_active, gen_nb, gen_nl, gen_plus>,
           p::parse_tree::remove_content::on<paren_expr, index_list, variable, format_spec, argument, arguments,
                                             func_call, attribute, signed_expr, negation, gen_col, gen_colrel,
                                             gen_value, gen_group, generate, dimensions, var_decl, declaration,
-                                            assignment, attr_assignment, if_statement, else_statement,
+                                            assignment, attr_assignment, if_statement, elseif_statement, else_statement,
                                             endif_statement, while_statement, endw_statement, endp_statement,
                                             call_statement, trace_statement, trace_level, include_statement,
-                                            parameter, parameters, proc_header>,
-          p::parse_tree::fold_one::on<or_expr, and_expr, rel_expr, add_expr, mul_expr, pow_expr>> {};
+                                            parameter, parameters, proc_header, input_prompt, input_statement,
+                                            print_statement>,
+          p::parse_tree::fold_one::on<or_expr, and_expr, rel_expr, add_expr, mul_expr, pow_expr, gen_sum>> {};
 
 // What a failing `must<Rule>` reports as expected.
 template <typename Rule>
@@ -247,6 +262,9 @@ template <> inline constexpr std::string_view expected<p::one<':'>> = "':' and a
 template <> inline constexpr std::string_view expected<string_literal> = "a string literal";
 template <> inline constexpr std::string_view expected<parameter> = "a parameter (type name)";
 template <> inline constexpr std::string_view expected<identifier> = "a parameter name";
+template <> inline constexpr std::string_view expected<gen_operand> = "an item after '+'";
+template <> inline constexpr std::string_view expected<input_target> = "the variable that receives the answer";
+template <> inline constexpr std::string_view expected<input_prompt> = "a prompt (a string or an expression)";
 template <> inline constexpr std::string_view expected<line_end> = "end of statement (or a ';' comment)";
 
 template <typename Rule>

@@ -26,6 +26,12 @@ struct Cell {
   bool typed = true;      // false: implicit host variable not yet typed by an assignment
 };
 
+// An answer converted to the type of the input statement that reads it (dialog.cpp).
+struct PreparedAnswer {
+  Value value;
+  std::string source;  // for the log: "--answer tool=3", "answers.txt:4"
+};
+
 enum class Flow : std::uint8_t { Normal, Exit, Abort };
 
 // Equality of short texts (display formats, names) with word loads instead of a memcmp call.
@@ -86,6 +92,10 @@ struct Interpreter::State {
   std::string piece;
   std::vector<FormatCache> format_sites;      // per generate item, then 3 defaults (integer, numeric, blknum)
   std::vector<FormatCache> constant_formats;  // per Program::format_specs entry
+
+  // input and print (docs/gppl-language.md): the run log, and an answer per input statement
+  std::ostream* log = nullptr;
+  std::vector<std::optional<PreparedAnswer>> answers;  // by Program::inputs index
 
   // trace (8)
   std::ostream* trace = nullptr;
@@ -231,6 +241,10 @@ struct Interpreter::State {
     return false;
   }
   void render_line_function(const GenItem& item, std::string& out);  // line_functions.cpp
+
+  // dialog.cpp
+  void input(std::uint32_t index);
+  void print(std::uint32_t first, std::uint32_t count);
 
   // trace.cpp
   int trace_level(std::uint32_t procedure) const;

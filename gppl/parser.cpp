@@ -81,6 +81,7 @@ Classified classify(std::string_view rest) {
   while (after < rest.size() && is_blank(rest[after])) ++after;
   const char next = after < rest.size() ? rest[after] : '\0';
   if (iequal(word, "if")) return {LineKind::If, ErrorCode::InvalidIf};
+  if (iequal(word, "elseif")) return {LineKind::Elseif, ErrorCode::InvalidIf};
   if (iequal(word, "else")) return {LineKind::Else, ErrorCode::InvalidIf};
   if (iequal(word, "endif")) return {LineKind::Endif, ErrorCode::InvalidIf};
   if (iequal(word, "while")) return {LineKind::While, ErrorCode::Unrecognized};
@@ -95,6 +96,11 @@ Classified classify(std::string_view rest) {
   if (iequal(word, "proc") && next == '@') return {LineKind::Header, ErrorCode::Unrecognized};
   if ((iequal(word, "inc") || iequal(word, "include")) && (next == '\'' || next == '"'))
     return {LineKind::Include, ErrorCode::Unrecognized};
+  // input/print are statements unless the line assigns a variable of that name (`print = 1`).
+  const bool assigns = (next == '=' && after + 1 < rest.size() && rest[after + 1] != '=') ||
+                       (next == '<' && after + 1 < rest.size() && rest[after + 1] == '<');
+  if (iequal(word, "input") && !assigns) return {LineKind::Input, ErrorCode::Unrecognized};
+  if (iequal(word, "print") && !assigns) return {LineKind::Print, ErrorCode::Unrecognized};
   if ((iequal(word, "change") || iequal(word, "active")) && next == '(')
     return {LineKind::AttrAssignment, ErrorCode::InvalidAssignment};
   // `name = ...` or `name<<i>> = ...`; anything else (a misspelt keyword) is unrecognized.
@@ -117,6 +123,7 @@ std::unique_ptr<SyntaxNode> parse_kind(LineKind kind, p::memory_input<>& in) {
     case LineKind::Assignment: return parse_as<g::assignment>(in);
     case LineKind::AttrAssignment: return parse_as<g::attr_assignment>(in);
     case LineKind::If: return parse_as<g::if_statement>(in);
+    case LineKind::Elseif: return parse_as<g::elseif_statement>(in);
     case LineKind::Else: return parse_as<g::else_statement>(in);
     case LineKind::Endif: return parse_as<g::endif_statement>(in);
     case LineKind::While: return parse_as<g::while_statement>(in);
@@ -125,6 +132,8 @@ std::unique_ptr<SyntaxNode> parse_kind(LineKind kind, p::memory_input<>& in) {
     case LineKind::Generate: return parse_as<g::generate>(in);
     case LineKind::Trace: return parse_as<g::trace_statement>(in);
     case LineKind::Stop: return parse_as<g::stop_statement>(in);
+    case LineKind::Input: return parse_as<g::input_statement>(in);
+    case LineKind::Print: return parse_as<g::print_statement>(in);
     default: return nullptr;
   }
 }

@@ -16,8 +16,8 @@ namespace gppl {
 using SyntaxNode = tao::pegtl::parse_tree::node;
 
 enum class LineKind : std::uint8_t {
-  Blank, Header, Endp, Include, Declaration, Assignment, AttrAssignment, If, Else, Endif, While, Endw, Call,
-  Generate, Trace, Stop, Invalid
+  Blank, Header, Endp, Include, Declaration, Assignment, AttrAssignment, If, Elseif, Else, Endif, While, Endw,
+  Call, Generate, Trace, Stop, Input, Print, Invalid
 };
 
 struct ParsedLine {

@@ -97,13 +97,16 @@ struct GenItem {
 };
 
 enum class OpCode : std::uint8_t {
-  Nop, Assign, SetChange, SetActive, JumpIfFalse, LoopIfFalse, Jump, Call, Generate, Trace, Abort, Exit, Return
+  Nop, Assign, SetChange, SetActive, JumpIfFalse, LoopIfFalse, Jump, Call, Generate, Trace, Abort, Exit, Return,
+  Input, Print
 };
 
 struct Instruction {
   OpCode op = OpCode::Nop;
-  std::uint32_t a = 0;  // Assign/Set*: target ref; Jump*: target instruction; Call: procedure; Generate: first item; Trace: constant
-  std::uint32_t b = 0;  // Assign/Set*/JumpIfFalse/LoopIfFalse/Trace: expression node; Generate: item count; Call: first arg
+  std::uint32_t a = 0;  // Assign/Set*: target ref; Jump*: target instruction; Call: procedure; Generate/Print: first
+                        // item; Trace: constant; Input: Program::inputs index
+  std::uint32_t b = 0;  // Assign/Set*/JumpIfFalse/LoopIfFalse/Trace: expression node; Generate/Print: item count;
+                        // Call: first arg
   std::uint32_t c = 0;  // LoopIfFalse: exit target; Call: argument count
   SourcePos pos;
 };
@@ -117,6 +120,16 @@ struct Procedure {
   std::vector<LocalVariable> locals;
   std::uint32_t frame_size = 0;
   bool defined = true;  // false: referenced by `call` only (error reported at load time)
+};
+
+// An `input` statement. Runs are not interactive: the host's answers are matched by the name of
+// the target variable; without one the variable keeps its value.
+struct InputStatement {
+  std::uint32_t prompt = 0;    // GenItem that renders the prompt
+  std::uint32_t target = 0;    // VarRef
+  std::string name;            // the target variable as written
+  std::optional<Type> type;    // nullopt: an implicit host variable, typed at run time
+  SourcePos pos;
 };
 
 // Slots of the system variables the generator and the block numbering use directly.
@@ -143,6 +156,7 @@ public:
   std::vector<GenItem> items;
   std::vector<Value> constants;
   std::vector<std::string> format_specs;  // constant display formats (parsed per interpreter)
+  std::vector<InputStatement> inputs;
   std::uint32_t format_sites = 0;
   std::optional<std::uint32_t> init_post;
   std::vector<std::uint32_t> init_inc;  // one per file that defines it, in inclusion order

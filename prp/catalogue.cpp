@@ -175,8 +175,10 @@ constexpr std::array<sv, 6> kLanguageRecordKeys{"options", "job_opt_type", "dril
                                                 "turn_type", "thread_type", "groove_type"};
 constexpr std::array<sv, 16> kSuffixes{"chi", "cze", "dan", "eng", "fre", "ger", "heb", "hun",
                                        "ita", "jap", "kor", "pol", "por", "rus", "spa", "tur"};
-constexpr std::array<sv, 7> kDrillBases{"DRILLING", "F_DRILL", "PECK", "TAPPING",
-                                        "BORING", "R_BORING", "F_BORING"};
+// NONE: real posts declare cycles with no base type (`drill_type = G81_Macro None Y`); such a
+// cycle cannot be expanded into moves.
+constexpr std::array<sv, 8> kDrillBases{"DRILLING", "F_DRILL", "PECK", "TAPPING",
+                                        "BORING", "R_BORING", "F_BORING", "NONE"};
 
 }  // namespace
 

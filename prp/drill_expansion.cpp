@@ -66,6 +66,9 @@ void DrillExpansion::start_cycle(const toolpath::Command& drill) {
   if (record->base == "TAPPING" || record->base == "R_BORING")
     throw StreamError(drill, where + " is marked N, but it needs spindle reversal or a spindle stop, which "
                                      "cannot be written as plain moves");
+  if (record->base == "NONE")
+    throw StreamError(drill, where + " is marked N, but it has no base type (None): nothing says which moves "
+                                     "it stands for");
   for (const char* level : {"drill_clearance_z", "drill_upper_z", "drill_lower_z"})
     if (!number(drill, level)) throw StreamError(drill, fmt::format("{}: the @drill has no {}", where, level));
   dwell_.reset();

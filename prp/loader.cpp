@@ -1,8 +1,6 @@
 #include "prp/loader.hpp"
 
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -12,9 +10,6 @@
 
 namespace prp {
 namespace {
-
-constexpr std::int64_t kIntegerLimit = 999999999;  // spec 1.3
-constexpr double kNumberLimit = 1e300;
 
 // Non-breaking spaces (UTF-8 C2 A0, or a lone A0 byte of a Windows code page) become blanks, byte
 // for byte, so columns and offsets stay those of the original line.
@@ -40,43 +35,7 @@ std::string lower(std::string_view s) {
   return r;
 }
 
-std::string join_choices(std::span<const std::string_view> choices) {
-  std::string r;
-  for (std::size_t i = 0; i < choices.size(); ++i) {
-    if (i) r += i + 1 == choices.size() ? " or " : ", ";
-    r += choices[i];
-  }
-  return r;
-}
-
-std::optional<bool> parse_logical(std::string_view t) {
-  if (toolpath::iequals(t, "Y") || t == "1" || toolpath::iequals(t, "TRUE")) return true;
-  if (toolpath::iequals(t, "N") || t == "0" || toolpath::iequals(t, "FALSE")) return false;
-  return std::nullopt;
-}
-
 }  // namespace
-
-std::vector<Token> tokenize(std::string_view value, std::size_t column, bool split_commas) {
-  std::vector<Token> tokens;
-  std::size_t i = 0;
-  while (i < value.size()) {
-    if (is_blank(value[i])) {
-      ++i;
-      continue;
-    }
-    if (split_commas && value[i] == ',') {
-      tokens.push_back({value.substr(i, 1), column + i});
-      ++i;
-      continue;
-    }
-    std::size_t j = i;
-    while (j < value.size() && !is_blank(value[j]) && !(split_commas && value[j] == ',')) ++j;
-    tokens.push_back({value.substr(i, j - i), column + i});
-    i = j;
-  }
-  return tokens;
-}
 
 Loader::Loader(std::string file_name, Units units) {
   params_.file_ = std::move(file_name);
@@ -96,6 +55,11 @@ void Loader::warning(std::size_t column, std::string message, std::size_t line) 
 }
 
 MachineParameters Loader::run(std::string_view text) {
+  // A SolidCAM machine ID file (VMID) is XML: recognised by content, whatever its extension.
+  std::string_view start = text.starts_with("\xEF\xBB\xBF") ? text.substr(3) : text;
+  const std::size_t first = start.find_first_not_of(" \t\r\n");
+  if (first != std::string_view::npos && start[first] == '<') return run_vmid(text);
+
   std::size_t number = 0;
   std::size_t last_length = 0;
   while (!text.empty() || number == 0) {
@@ -114,6 +78,10 @@ MachineParameters Loader::run(std::string_view text) {
   else if (state_ == State::Body)
     error(last_length + 1, "expected `endp` before the end of the file (is the file truncated?)");
 
+  return finish();
+}
+
+MachineParameters Loader::finish() {
   check_ranges();
   fill_defaults();
   if (!errors_.empty()) {
@@ -123,6 +91,22 @@ MachineParameters Loader::run(std::string_view text) {
     throw LoadError(std::move(errors_));
   }
   return std::move(params_);
+}
+
+void Loader::error_at(toolpath::SourcePosition where, std::string message) {
+  errors_.push_back({std::move(where), std::move(message)});
+}
+
+void Loader::warning_at(toolpath::SourcePosition where, std::string message) {
+  params_.warnings_.push_back({std::move(where), std::move(message)});
+}
+
+bool Loader::add_parameter(Parameter p) {
+  const std::string lkey = lower(p.key);
+  if (params_.index_.count(lkey)) return false;
+  params_.index_.emplace(lkey, params_.parameters_.size());
+  params_.parameters_.push_back(std::move(p));
+  return true;
 }
 
 void Loader::line(std::string_view original, std::size_t number) {
@@ -185,6 +169,12 @@ void Loader::assignment(std::string_view original, std::string_view key, std::si
   const std::size_t column = value_begin + 1;
 
   std::string_view lang;
+  // Real posts leave keys empty (`_4th_axes_around =`): not set, the engine default applies.
+  const KeyInfo* known = find_key(key);
+  if (value.empty() && (!known || known->kind != ValueKind::String)) {
+    if (!known && !record_base(key, lang)) remember_unknown(original, key, key_column, value_begin, value_end);
+    return;
+  }
   if (auto base = record_base(key, lang)) {
     record(*base, lang, key, value, column);
     return;
@@ -192,13 +182,7 @@ void Loader::assignment(std::string_view original, std::string_view key, std::si
   const std::string lkey = lower(key);
   const KeyInfo* info = find_key(key);
   if (!info) {
-    warning(key_column, fmt::format("unknown key `{}`: kept as text for the post", key));
-    UnknownKey u{std::string(key), std::string(original.substr(value_begin, value_end - value_begin)),
-                 at(column)};
-    auto it = std::find_if(params_.unknown_.begin(), params_.unknown_.end(),
-                           [&](const UnknownKey& k) { return toolpath::iequals(k.key, key); });
-    if (it != params_.unknown_.end()) *it = std::move(u);
-    else params_.unknown_.push_back(std::move(u));
+    remember_unknown(original, key, key_column, value_begin, value_end);
     return;
   }
   Parameter p;
@@ -220,101 +204,18 @@ void Loader::assignment(std::string_view original, std::string_view key, std::si
   params_.parameters_.push_back(std::move(p));
 }
 
-bool Loader::parse_scalar(const KeyInfo& info, std::string_view value, std::size_t column, Parameter& out) {
-  const bool numeric = info.kind == ValueKind::Number || info.kind == ValueKind::Point;
-  const std::vector<Token> tokens = tokenize(value, column, numeric);
-  const std::size_t end_column = column + value.size();
-
-  switch (info.kind) {
-    case ValueKind::String:
-      out.text = std::string(value);
-      return true;
-
-    case ValueKind::Logical: {
-      if (tokens.empty()) return error(column, "expected Y or N"), false;
-      auto v = parse_logical(tokens[0].text);
-      if (!v) return error(tokens[0].column, fmt::format("expected Y or N, found `{}`", tokens[0].text)), false;
-      out.logical = *v;
-      for (std::size_t i = 1; i < tokens.size(); ++i) out.extra.emplace_back(tokens[i].text);
-      return true;
-    }
-
-    case ValueKind::Integer: {
-      if (tokens.empty()) return error(column, "expected an integer"), false;
-      const Token& t = tokens[0];
-      if (!grammar::matches<grammar::integer>(t.text))
-        return error(t.column, fmt::format("expected an integer, found `{}`", t.text)), false;
-      std::string_view digits = t.text[0] == '+' ? t.text.substr(1) : t.text;
-      std::int64_t v = 0;
-      auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-      if (ec != std::errc{} || ptr != digits.data() + digits.size() || v > kIntegerLimit || v < -kIntegerLimit)
-        return error(t.column, "integer out of range (-999999999 .. 999999999)"), false;
-      out.integer = v;
-      if (tokens.size() > 1) warning(tokens[1].column, "extra text after the value is ignored");
-      return true;
-    }
-
-    case ValueKind::Enumeration: {
-      if (tokens.empty()) return error(column, "expected " + join_choices(info.choices)), false;
-      const Token& t = tokens[0];
-      out.text = std::string(t.text);
-      bool known = std::any_of(info.choices.begin(), info.choices.end(),
-                               [&](std::string_view c) { return toolpath::iequals(c, t.text); });
-      if (!known) {
-        std::string message = fmt::format("expected {}, found `{}`", join_choices(info.choices), t.text);
-        if (!info.unknown_choice_is_warning) return error(t.column, message), false;
-        warning(t.column, message + " (kept)");
-      }
-      if (tokens.size() > 1) warning(tokens[1].column, "extra text after the value is ignored");
-      return true;
-    }
-
-    case ValueKind::Number:
-    case ValueKind::Point: {
-      const std::size_t per_half = info.kind == ValueKind::Number ? 1 : 3;
-      const std::string expected = per_half == 1 ? "expected a number, or number ',' number"
-                                                 : "expected 3 numbers, optionally ',' and 3 more";
-      std::array<double, 6> v{};
-      std::size_t count = 0;  // numbers read
-      bool comma = false;
-      for (const Token& t : tokens) {
-        if (t.text == ",") {
-          if (comma || count != per_half) return error(t.column, expected), false;
-          comma = true;
-          continue;
-        }
-        if (count == (comma ? 2 * per_half : per_half) || !grammar::matches<grammar::number>(t.text))
-          return error(t.column, expected + fmt::format(", found `{}`", t.text)), false;
-        double d = 0;
-        auto [ptr, ec] = std::from_chars(t.text.data() + (t.text[0] == '+'), t.text.data() + t.text.size(), d);
-        if (ec != std::errc{} || std::abs(d) > kNumberLimit)
-          return error(t.column, "number out of range (-1E300 .. 1E300)"), false;
-        (void)ptr;
-        v[count++] = d;
-      }
-      if (count != (comma ? 2 * per_half : per_half)) return error(end_column, expected), false;
-      for (std::size_t i = 0; i < per_half; ++i) {
-        out.metric[i] = v[i];
-        out.inch[i] = comma ? v[per_half + i] : v[i];
-      }
-      out.has_inch_half = comma;
-      if (comma) {
-        for (std::size_t i = 0; i < per_half; ++i) {
-          double expect = out.metric[i] / 25.4;
-          if (std::abs(out.inch[i] - expect) > 0.0001 + 0.01 * std::abs(expect)) {
-            warning(column, fmt::format("the inch value {} is not the metric value {} / 25.4 (a decimal "
-                                        "comma written by mistake?)", out.inch[i], out.metric[i]));
-            break;
-          }
-        }
-      }
-      return true;
-    }
-
-    case ValueKind::Record:
-      break;
+void Loader::remember_unknown(std::string_view original, std::string_view key, std::size_t key_column,
+                              std::size_t value_begin, std::size_t value_end) {
+  UnknownKey u{std::string(key), std::string(original.substr(value_begin, value_end - value_begin)),
+               at(value_begin + 1)};
+  auto it = std::find_if(params_.unknown_.begin(), params_.unknown_.end(),
+                         [&](const UnknownKey& k) { return toolpath::iequals(k.key, key); });
+  if (it != params_.unknown_.end()) {
+    *it = std::move(u);  // the last value wins, as for known keys; warned about once
+    return;
   }
-  return false;
+  warning(key_column, fmt::format("unknown key `{}`: kept as text for the post", key));
+  params_.unknown_.push_back(std::move(u));
 }
 
 void Loader::check_ranges() {

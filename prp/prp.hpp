@@ -1,4 +1,5 @@
-// PRP machine-parameter files (SolidCAM GPPTool `machine.prp`) and the stream filters they imply.
+// PRP machine-parameter files (SolidCAM GPPTool `machine.prp`, `.mac`, or a `.vmid` machine ID file
+// mapped onto the same model) and the stream filters they imply.
 //
 // Contract with the engine (postproc/):
 //   auto params = prp::load_file(path, job_is_inch ? prp::Units::Inch : prp::Units::Metric);
@@ -98,7 +99,8 @@ struct Record {
   std::vector<std::string> params;  // user parameter names, as written
   VarType type = VarType::Numeric;  // Declaration only
   std::string raw;
-  toolpath::SourcePosition where;
+  toolpath::SourcePosition where;       // of the value (a VMID: of the element's first attribute)
+  toolpath::SourcePosition name_where;  // of the name
 };
 
 // A key the spec does not document: kept verbatim, so the post can still read it.
@@ -115,7 +117,8 @@ struct ExternalVariable {
   // Initial value (typed declarations: 0, FALSE or ''), or nullopt: declared but inactive until a
   // command of the toolpath sets it (cycle parameters such as `Delay`).
   std::optional<toolpath::Value> initial;
-  std::string declared_by;  // "options", "job_opt_type", "drill_type", ...
+  std::string declared_by;  // "options", "job_opt_type", "drill_type", ... (VMID: <MachineParams> ->
+                            // "options", per-job-type lists -> "job_opt_type", <CycleParams> -> "drill_type")
   toolpath::SourcePosition where;
 };
 
@@ -168,8 +171,9 @@ private:
   std::vector<ExternalVariable> externals_;
 };
 
-// Loads a PRP file. Throws LoadError with every error found (file:line:col), or
-// toolpath::InputError when the file cannot be read.
+// Loads a machine file: a PRP (also the pre-2010 `.mac`), or a SolidCAM VMID, which is XML and
+// recognised by content (first non-blank character `<`), whatever the name. Throws LoadError with
+// every error found (file:line:col), or toolpath::InputError when the file cannot be read.
 MachineParameters load_file(const std::string& path, Units units);
 MachineParameters load_source(std::string_view text, const std::string& file_name, Units units);
 // The parameters of a machine whose PRP sets nothing: every key at its engine default (spec 3.0).

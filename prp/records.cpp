@@ -71,7 +71,7 @@ void Loader::record(std::string_view base, std::string_view lang, std::string_vi
       auto b = drill_base(t[0].text);
       if (!b)
         return error(t[0].column, fmt::format("expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, "
-                                              "BORING, R_BORING or F_BORING), found `{}`", t[0].text));
+                                              "BORING, R_BORING, F_BORING or None), found `{}`", t[0].text));
       r.base = std::string(*b);
     }
   } else if (t.size() >= 3 && flag_word(t[2].text) && (base == "drill_type" || base == "wc_macro")) {
@@ -81,7 +81,7 @@ void Loader::record(std::string_view base, std::string_view lang, std::string_vi
       auto b = drill_base(t[1].text);
       if (!b)
         return error(t[1].column, fmt::format("expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, "
-                                              "BORING, R_BORING or F_BORING), found `{}`", t[1].text));
+                                              "BORING, R_BORING, F_BORING or None), found `{}`", t[1].text));
       r.base = std::string(*b);
     } else {
       r.base = std::string(t[1].text);
@@ -108,41 +108,47 @@ void Loader::record(std::string_view base, std::string_view lang, std::string_vi
                                             "at most 60 characters)", t[i].text));
   }
   r.name = std::string(t[name_token].text);
+  r.name_where = at(t[name_token].column);
   for (std::size_t i = first_param; i < t.size(); ++i) r.params.emplace_back(t[i].text);
 
-  for (const Record& other : params_.records_) {
-    if (other.key == r.key && other.lang == r.lang && other.form == r.form &&
-        toolpath::iequals(other.name, r.name))
-      return error(t[name_token].column, fmt::format("`{}` declares `{}` twice (first at line {})", key, r.name,
-                                                     other.where.line));
-  }
-
+  if (!add_record(r)) return;  // a name used twice
   // PRP external variables: a typed declaration has its type's initial value; cycle parameters
   // are numeric and inactive until a command sets them.
-  auto declare = [&](const Token& tok, VarType type, bool inactive) {
-    auto& all = params_.externals_;
-    auto it = std::find_if(all.begin(), all.end(),
-                           [&](const ExternalVariable& v) { return toolpath::iequals(v.name, tok.text); });
-    if (it == all.end()) {
-      all.push_back({std::string(tok.text), type,
-                     inactive ? std::nullopt : std::optional<toolpath::Value>(initial_value(type)), r.key,
-                     at(tok.column)});
-      return true;
-    }
-    if (it->type != type) {
-      error(tok.column, fmt::format("`{}` is declared {} here but {} at line {}", tok.text, type_name(type),
-                                    type_name(it->type), it->where.line));
-      return false;
-    }
-    return true;
-  };
   if (r.form == Record::Form::Declaration) {
-    if (!declare(t[0], r.type, false)) return;
+    declare(t[0].text, r.type, initial_value(r.type), r.key, at(t[0].column));
   } else {
     for (std::size_t i = first_param; i < t.size(); ++i)
-      if (!declare(t[i], VarType::Numeric, true)) return;
+      if (!declare(t[i].text, VarType::Numeric, std::nullopt, r.key, at(t[i].column))) break;
+  }
+}
+
+bool Loader::add_record(Record r) {
+  for (const Record& other : params_.records_) {
+    if (other.key == r.key && other.lang == r.lang && other.form == r.form && toolpath::iequals(other.name, r.name)) {
+      error_at(r.name_where, fmt::format("`{}{}{}` declares `{}` twice (first at line {})", r.key,
+                                         r.lang.empty() ? "" : "_", r.lang, r.name, other.where.line));
+      return false;
+    }
   }
   params_.records_.push_back(std::move(r));
+  return true;
+}
+
+bool Loader::declare(std::string_view name, VarType type, std::optional<toolpath::Value> initial, std::string_view by,
+                     toolpath::SourcePosition where) {
+  auto& all = params_.externals_;
+  auto it = std::find_if(all.begin(), all.end(),
+                         [&](const ExternalVariable& v) { return toolpath::iequals(v.name, name); });
+  if (it == all.end()) {
+    all.push_back({std::string(name), type, std::move(initial), std::string(by), std::move(where)});
+    return true;
+  }
+  if (it->type != type) {
+    error_at(std::move(where), fmt::format("`{}` is declared {} here but {} at line {}", name, type_name(type),
+                                           type_name(it->type), it->where.line));
+    return false;
+  }
+  return true;
 }
 
 }  // namespace prp

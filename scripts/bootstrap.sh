@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 type=${1:-Debug}
-packages=(cmake make g++ libeigen3-dev libfmt-dev tao-pegtl-dev libgtest-dev)
+packages=(cmake make g++ libeigen3-dev libfmt-dev tao-pegtl-dev libgtest-dev libpugixml-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

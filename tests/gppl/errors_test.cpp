@@ -70,7 +70,7 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenPost{"390 generate not closed", "@t\n{nb, 'G'gcode\nendp\n", "2:14: error 390"},
         BrokenPost{"390 nb inside a modal group", "@t\n{[nb 'X']}\nendp\n", "2:3: error 390"},
         BrokenPost{"390 modal group not closed", "@t\n{[' X'xpos}\nendp\n", "2:11: error 390"},
-        BrokenPost{"390 unparenthesised expression", "@t\n{nb, xpos+1}\nendp\n", "2:10: error 390"},
+        BrokenPost{"390 unparenthesised expression", "@t\n{nb, xpos*2}\nendp\n", "2:10: error 390"},
         BrokenPost{"391 call without procedure name", "@t\ncall stop_tool\nendp\n", "2:6: error 391"},
         BrokenPost{"391 call with wrong argument count", "@t\ncall @m(1)\nendp\n@m(numeric a, numeric b)\nendp\n",
                    "2:6: error 391"},

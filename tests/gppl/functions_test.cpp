@@ -286,7 +286,8 @@ TEST(FunctionTable, EveryFunctionOfTheSpec) {
                          "frac", "int",  "log",   "log10", "mod",     "pow",   "round", "round2val", "sign",
                          "sin",  "sqrt", "square", "tan",  "todeg",   "torad", "date",  "dup",    "instr",
                          "left", "lower", "replace", "rev", "right",  "space", "strlen", "substr", "time",
-                         "tonum", "tostr", "trim", "upper", "even",   "odd"};
+                         "tonum", "tostr", "trim", "upper", "even",   "odd",   "norm360", "adims", "alen",
+                         "asize"};
   EXPECT_EQ(gppl::all_functions().size(), std::size(names));
   for (const char* n : names) EXPECT_NE(gppl::find_function(n), nullptr) << n;
 }

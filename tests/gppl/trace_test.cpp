@@ -100,4 +100,15 @@ TEST(Trace, VariableLevel) {
   EXPECT_EQ(trace.str(), "(1)@t               ==>\n");
 }
 
+// The list text is found by its constant index, whatever nodes the expressions before it made.
+TEST(Trace, ListAfterOtherExpressions) {
+  Post post("@init_post\nx = a + b * c\ny = x - a\ntrace \"@t\":1\nendp\n@t\nendp\n@u\nendp\n");
+  std::ostringstream trace;
+  post.run->set_trace_stream(&trace);
+  post.run->start();
+  post.call("@u");
+  post.call("@t");
+  EXPECT_EQ(trace.str(), "(1)@t               ==>\n");
+}
+
 }  // namespace

@@ -20,6 +20,7 @@ const char* kPrp =
     "drill_type = Tapping Tapping N\n"
     "drill_type = G81 Drilling Y\n"
     "drill_type = BadDwell F_Boring N Delay DwellToo\n"
+    "drill_type = Macro None N\n"
     "endp\n";
 
 // A drill job: two holes, levels clearance 10, upper 2, lower -5, pecks of 3.
@@ -102,6 +103,9 @@ TEST(DrillExpansion, CyclesThatCannotBeExpandedAreErrors) {
   EXPECT_EQ(expansion_error("BadDwell"),
             "command 1 (@drill): drill cycle `BadDwell` (base F_BORING, PRP line 9) of job `DR1` needs a dwell: its "
             "record must declare exactly one parameter whose name contains `delay` or `dwell`");
+  EXPECT_EQ(expansion_error("Macro"),
+            "command 1 (@drill): drill cycle `Macro` (base NONE, PRP line 10) of job `DR1` is marked N, but it has "
+            "no base type (None): nothing says which moves it stands for");
 }
 
 TEST(DrillExpansion, UndeclaredCycleIsAWarning) {

@@ -49,7 +49,6 @@ const ErrorCase kErrorCases[] = {
      "t.prp:2:14: number out of range (-1E300 .. 1E300)"},
     {"Enumeration", "@pre_processor\nmachine_plane = XZ\nendp\n",
      "t.prp:2:17: expected XY, YZ, ZX or ZC, found `XZ`"},
-    {"EmptyNonString", "@pre_processor\narc_3d =\nendp\n", "t.prp:2:9: expected Y or N"},
     {"NoHeader", "; comment\narc_exist = Y\nendp\n", "t.prp:2:1: expected `@pre_processor` before the first statement"},
     {"EmptyFile", "", "t.prp:1:1: expected `@pre_processor`: the file has no parameter section"},
     {"NoEndp", "@pre_processor\narc_exist = Y",
@@ -60,11 +59,11 @@ const ErrorCase kErrorCases[] = {
      "t.prp:2:1: expected `key = value` (a key starts with a letter or '_')"},
     {"HeaderTwice", "@pre_processor\n@pre_processor\nendp\n", "t.prp:2:1: `@pre_processor` appears twice"},
     {"DrillBase", "@pre_processor\ndrill_type = G81 Drill Y\nendp\n",
-     "t.prp:2:18: expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, BORING, R_BORING or F_BORING), "
-     "found `Drill`"},
+     "t.prp:2:18: expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, BORING, R_BORING, F_BORING or "
+     "None), found `Drill`"},
     {"DrillLegacyBase", "@pre_processor\ndrill_type = Spot Y\nendp\n",
-     "t.prp:2:14: expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, BORING, R_BORING or F_BORING), "
-     "found `Spot`"},
+     "t.prp:2:14: expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, BORING, R_BORING, F_BORING or "
+     "None), found `Spot`"},
     {"RecordFlag", "@pre_processor\ndrill_type = G81 Drilling Maybe\nendp\n",
      "t.prp:2:27: expected Y or N, found `Maybe` (a record is `name base Y|N {param}`)"},
     {"RecordTooShort", "@pre_processor\nturn_type = T1\nendp\n",

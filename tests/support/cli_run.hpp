@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "postproc/cli.hpp"
+#include "postproc/cli/cli.hpp"
 
 namespace test_support {
 

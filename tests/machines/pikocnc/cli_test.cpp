@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "postproc/cli.hpp"
+#include "postproc/cli/cli.hpp"
 #include "tests/support/cli_run.hpp"
 
 namespace {

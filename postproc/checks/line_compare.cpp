@@ -1,0 +1,131 @@
+#include "postproc/checks/line_compare.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+
+namespace postproc {
+namespace {
+
+bool digit(char c) { return c >= '0' && c <= '9'; }
+bool alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
+bool blank(char c) { return c == ' ' || c == '\t'; }
+
+// Replaces dates and times in `text` (a comment) with `#`: `21.11.2025`, `2025-11-21`, `21-NOV-2025`,
+// `12:05`, `12:05:33`. A plain decimal number (one `.`) is not a date.
+std::string mask_datetime(std::string_view text) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (!digit(text[i]) || (i > 0 && (digit(text[i - 1]) || alpha(text[i - 1])))) {
+      out += text[i++];
+      continue;
+    }
+    std::size_t j = i, separators = 0, colons = 0;
+    while (j < text.size() && digit(text[j])) ++j;
+    while (j + 1 < text.size() && (text[j] == '.' || text[j] == '/' || text[j] == '-' || text[j] == ':') &&
+           (digit(text[j + 1]) || (text[j] != ':' && alpha(text[j + 1])))) {
+      colons += text[j] == ':';
+      ++separators;
+      ++j;
+      if (digit(text[j]))
+        while (j < text.size() && digit(text[j])) ++j;
+      else
+        while (j < text.size() && alpha(text[j])) ++j;
+    }
+    if (separators >= 2 || colons >= 1) {
+      out += '#';
+      i = j;
+    } else {
+      out.append(text.substr(i, j - i));
+      i = j;
+    }
+  }
+  return out;
+}
+
+std::string mask_comment_datetimes(std::string_view line) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    char c = line[i];
+    if (c == '(') {
+      std::size_t close = line.find(')', i);
+      std::size_t end = close == std::string_view::npos ? line.size() : close + 1;
+      out += mask_datetime(line.substr(i, end - i));
+      i = end;
+    } else if (c == ';') {
+      out += mask_datetime(line.substr(i));
+      break;
+    } else {
+      out += c;
+      ++i;
+    }
+  }
+  return out;
+}
+
+// Splits off the next number (`-12.5`, `.5`, `3.`) at `pos`, or returns false.
+bool read_number(std::string_view s, std::size_t& pos, double& value) {
+  std::size_t j = pos;
+  if (j < s.size() && (s[j] == '-' || s[j] == '+')) ++j;
+  std::size_t digits = 0;
+  while (j < s.size() && digit(s[j])) ++j, ++digits;
+  if (j < s.size() && s[j] == '.') {
+    ++j;
+    while (j < s.size() && digit(s[j])) ++j, ++digits;
+  }
+  if (digits == 0) return false;
+  value = std::strtod(std::string(s.substr(pos, j - pos)).c_str(), nullptr);
+  pos = j;
+  return true;
+}
+
+bool match_with_tolerance(std::string_view a, std::string_view b, double tolerance) {
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    double x = 0, y = 0;
+    std::size_t i2 = i, j2 = j;
+    bool na = read_number(a, i2, x), nb = read_number(b, j2, y);
+    if (na && nb) {
+      if (std::fabs(x - y) > tolerance) return false;
+      i = i2;
+      j = j2;
+      continue;
+    }
+    if (a[i] != b[j]) return false;
+    ++i;
+    ++j;
+  }
+  return i == a.size() && j == b.size();
+}
+
+}  // namespace
+
+std::string normalize_line(std::string_view line, const CompareOptions& o) {
+  std::string_view s = line;
+  if (o.ignore_trailing_blanks)
+    while (!s.empty() && blank(s.back())) s.remove_suffix(1);
+  if (o.ignore_block_numbers) {
+    std::size_t p = 0;
+    while (p < s.size() && blank(s[p])) ++p;
+    if (p + 1 < s.size() && s[p] == 'N' && digit(s[p + 1])) {
+      p += 1;
+      while (p < s.size() && digit(s[p])) ++p;
+      if (p < s.size() && blank(s[p])) ++p;
+      s.remove_prefix(p);
+    }
+  }
+  if (o.ignore_leading_blanks)
+    while (!s.empty() && blank(s.front())) s.remove_prefix(1);
+  return o.ignore_datetime ? mask_comment_datetimes(s) : std::string(s);
+}
+
+bool lines_match(std::string_view expected, std::string_view actual, const CompareOptions& o) {
+  bool plain = !o.ignore_block_numbers && !o.ignore_trailing_blanks && !o.ignore_leading_blanks && !o.ignore_datetime;
+  if (plain && o.numeric_tolerance <= 0) return expected == actual;
+  std::string a = normalize_line(expected, o), b = normalize_line(actual, o);
+  return o.numeric_tolerance > 0 ? match_with_tolerance(a, b, o.numeric_tolerance) : a == b;
+}
+
+}  // namespace postproc

@@ -1,0 +1,287 @@
+// `postproc verify`: the NC side (the PikoCNC model's motion), normalisation and comparison.
+#include "postproc/checks/verify.hpp"
+
+#include <cmath>
+#include <deque>
+#include <numbers>
+
+#include <Eigen/Geometry>  // cross(): declared in Core, defined here (Release builds fail to link without it)
+#include <fmt/format.h>
+
+#include "machines/pikocnc/reader.hpp"
+#include "toolpath/value.hpp"
+
+namespace postproc::verify {
+namespace {
+
+using toolpath::Command;
+using toolpath::iequals;
+namespace geo = toolpath::geometry;
+
+double number_or(const Command& c, std::string_view name, double fallback) {
+  const toolpath::Value* v = c.find(name);
+  return v ? v->as_number() : fallback;
+}
+
+std::string word(const Command& c, std::string_view name) {
+  const toolpath::Value* v = c.find(name);
+  return v ? v->text : std::string();
+}
+
+class NcMotion final : public MotionSource {
+public:
+  explicit NcMotion(const std::filesystem::path& program) {
+    pikocnc::Options options;
+    options.dialect = pikocnc::Dialect::V2025;
+    options.comments_as_messages = false;
+    options.cutter_compensation = false;  // the toolpath is the programmed contour
+    reader_ = pikocnc::PikoReader::open(program.string(), options);
+  }
+
+  bool next(Motion& out) override {
+    while (reader_->next(command_)) {
+      if (convert(command_, out)) return true;
+    }
+    return false;
+  }
+
+private:
+  bool convert(const Command& c, Motion& m) {
+    m = Motion{};
+    m.name = c.name;
+    m.where = reader_->line();
+    const Eigen::Vector3d to(number_or(c, "xpos", position_.x()), number_or(c, "ypos", position_.y()),
+                             number_or(c, "zpos", position_.z()));
+    if (iequals(c.name, "@rapid_move") || iequals(c.name, "@line")) {
+      m.kind = iequals(c.name, "@line") ? MotionKind::Feed : MotionKind::Rapid;
+      m.feed = m.kind == MotionKind::Feed ? number_or(c, "feed", 0.0) : 0.0;
+      return moved(m, to);
+    }
+    if (iequals(c.name, "@arc")) {
+      m.kind = MotionKind::Arc;
+      m.feed = number_or(c, "feed", 0.0);
+      auto plane = geo::parse_plane(word(c, "arc_plane")).value_or(geo::Plane::XY);
+      Eigen::Vector3d centre(number_or(c, "xcenter", 0.0), number_or(c, "ycenter", 0.0), number_or(c, "zcenter", 0.0));
+      auto dir = iequals(word(c, "arc_direction"), "CW") ? geo::Direction::CW : geo::Direction::CCW;
+      m.arc = geo::make_arc(position_, to, centre, plane, dir, number_or(c, "arc_size", 0.0));
+      return moved(m, to);
+    }
+    if (iequals(c.name, "@delay")) {
+      m.kind = MotionKind::Dwell;
+      m.seconds = number_or(c, "delay_period", 0.0);
+      return true;
+    }
+    if (iequals(c.name, "@change_tool")) {
+      m.kind = MotionKind::Tool;
+      m.tool = static_cast<std::int64_t>(number_or(c, "tool_number", 0));
+      return true;
+    }
+    if (iequals(c.name, "@start_tool") || iequals(c.name, "@stop_tool")) {
+      m.kind = MotionKind::Spindle;
+      spindle_ = iequals(c.name, "@stop_tool") ? 0 : iequals(word(c, "spin_direction"), "CCW") ? -1 : 1;
+      m.spindle = spindle_;
+      m.speed = spindle_ ? number_or(c, "spin", 0.0) : 0.0;
+      return true;
+    }
+    if (iequals(c.name, "@m_feed_spin")) {
+      if (spindle_ == 0 || !c.find("spin")) return false;
+      m.kind = MotionKind::Spindle;
+      m.spindle = spindle_;
+      m.speed = number_or(c, "spin", 0.0);
+      return true;
+    }
+    if (iequals(c.name, "@thread_move") || iequals(c.name, "@macro") || iequals(c.name, "@probe")) {
+      m.kind = MotionKind::Other;
+      return true;
+    }
+    return false;  // messages, coolant, program frame: not compared
+  }
+
+  bool moved(Motion& m, const Eigen::Vector3d& to) {
+    m.from = position_;
+    m.from_known = started_;
+    m.to = to;
+    position_ = to;
+    started_ = true;
+    return true;
+  }
+
+  std::unique_ptr<pikocnc::PikoReader> reader_;
+  Command command_;
+  Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
+  bool started_ = false;  // the first move's start is the controller's, not the program's
+  int spindle_ = 0;
+};
+
+bool all_known(const Motion& m) { return m.known[0] && m.known[1] && m.known[2]; }
+
+bool straight(const Motion& m) { return m.kind == MotionKind::Rapid || m.kind == MotionKind::Feed; }
+
+class Normalised final : public MotionSource {
+public:
+  Normalised(MotionSource& source, const Tolerances& tolerances) : source_(source), tol_(tolerances) {}
+
+  bool next(Motion& out) override {
+    for (;;) {
+      Motion m;
+      if (!source_.next(m)) break;
+      if (!keep(m)) continue;
+      if (held_ && joins(*held_, m)) {
+        held_->to = m.to;
+        continue;
+      }
+      if (held_) {
+        out = std::move(*held_);
+        held_ = std::move(m);
+        return true;
+      }
+      held_ = std::move(m);
+    }
+    if (!held_) return false;
+    out = std::move(*held_);
+    held_.reset();
+    return true;
+  }
+
+private:
+  bool keep(const Motion& m) {
+    if (m.kind == MotionKind::Spindle) {
+      bool same = m.spindle == spindle_ && (m.spindle == 0 || std::abs(m.speed - speed_) <= tol_.feed);
+      spindle_ = m.spindle;
+      speed_ = m.speed;
+      return !same;
+    }
+    if (straight(m) && m.from_known && all_known(m) && (m.to - m.from).norm() <= tol_.position) return false;
+    return true;
+  }
+
+  // Two straight moves of one kind and feed, the second going on in the first one's direction.
+  static bool joins(const Motion& a, const Motion& b) {
+    if (!straight(a) || a.kind != b.kind || std::abs(a.feed - b.feed) > 1e-9) return false;
+    if (!a.from_known || !b.from_known || !all_known(a) || !all_known(b)) return false;
+    const Eigen::Vector3d u = a.to - a.from, v = b.to - b.from;
+    if (u.norm() < 1e-12 || v.norm() < 1e-12 || u.dot(v) <= 0) return false;
+    return u.cross(v).norm() / u.norm() <= 1e-6;  // distance of b's end from a's line, per unit of v
+  }
+
+  MotionSource& source_;
+  Tolerances tol_;
+  std::optional<Motion> held_;
+  int spindle_ = 0;
+  double speed_ = 0.0;
+};
+
+std::string_view kind_name(MotionKind k) {
+  switch (k) {
+    case MotionKind::Rapid: return "rapid";
+    case MotionKind::Feed: return "feed";
+    case MotionKind::Arc: return "arc";
+    case MotionKind::Dwell: return "dwell";
+    case MotionKind::Tool: return "tool change";
+    case MotionKind::Spindle: return "spindle";
+    case MotionKind::Other: return "other";
+  }
+  return "?";
+}
+
+std::string point_text(const Eigen::Vector3d& p, const std::array<bool, 3>& known) {
+  std::string s;
+  const char* axis = "XYZ";
+  for (int i = 0; i < 3; ++i)
+    s += known[i] ? fmt::format("{}{}{:.4f}", i ? " " : "", axis[i], p[i]) : fmt::format("{}{}?", i ? " " : "", axis[i]);
+  return s;
+}
+
+// The first way `a` (expected) and `b` (actual) differ, or empty.
+std::string difference(const Motion& a, const Motion& b, const Tolerances& given) {
+  Tolerances t = given;  // a difference of exactly the tolerance passes, whatever the binary noise
+  t.position += 1e-9;
+  t.feed += 1e-9;
+  t.seconds += 1e-9;
+  if (a.kind != b.kind) return fmt::format("expected a {}, the NC program makes a {}", kind_name(a.kind), kind_name(b.kind));
+  switch (a.kind) {
+    case MotionKind::Rapid:
+    case MotionKind::Feed:
+    case MotionKind::Arc: {
+      for (int i = 0; i < 3; ++i)
+        if (a.known[i] && std::abs(a.to[i] - b.to[i]) > t.position)
+          return fmt::format("end point differs in {} by {:.4f} mm", "XYZ"[i], b.to[i] - a.to[i]);
+      if (a.kind != MotionKind::Rapid && std::abs(a.feed - b.feed) > t.feed)
+        return fmt::format("feed {} instead of {}", b.feed, a.feed);
+      if (a.kind != MotionKind::Arc) return {};
+      if (a.arc.plane != b.arc.plane)
+        return fmt::format("arc in plane {} instead of {}", geo::plane_name(b.arc.plane), geo::plane_name(a.arc.plane));
+      if (a.arc.direction != b.arc.direction) return "arc turns the other way";
+      if ((a.arc.centre - b.arc.centre).norm() > t.position)
+        return fmt::format("arc centre differs by {:.4f} mm", (a.arc.centre - b.arc.centre).norm());
+      if (std::abs(a.arc.radius - b.arc.radius) > t.position)
+        return fmt::format("arc radius {:.4f} instead of {:.4f}", b.arc.radius, a.arc.radius);
+      const double length = std::abs(a.arc.sweep - b.arc.sweep) * std::numbers::pi / 180.0 * a.arc.radius;
+      if (length > t.position) return fmt::format("arc sweeps {:.4f} degrees instead of {:.4f}", b.arc.sweep, a.arc.sweep);
+      return {};
+    }
+    case MotionKind::Dwell:
+      if (std::abs(a.seconds - b.seconds) > t.seconds) return fmt::format("dwell {} s instead of {} s", b.seconds, a.seconds);
+      return {};
+    case MotionKind::Tool:
+      if (a.tool != b.tool) return fmt::format("tool {} instead of {}", b.tool, a.tool);
+      return {};
+    case MotionKind::Spindle:
+      if (a.spindle != b.spindle || (a.spindle && std::abs(a.speed - b.speed) > t.feed))
+        return fmt::format("spindle {} instead of {}", describe(b), describe(a));
+      return {};
+    case MotionKind::Other:
+      return "an event verify does not compare";
+  }
+  return {};
+}
+
+}  // namespace
+
+std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program) { return std::make_unique<NcMotion>(program); }
+
+std::unique_ptr<MotionSource> normalised(MotionSource& source, const Tolerances& tolerances) {
+  return std::make_unique<Normalised>(source, tolerances);
+}
+
+Result compare(MotionSource& expected, MotionSource& actual, const Tolerances& tolerances) {
+  Result result;
+  for (;;) {
+    Motion a, b;
+    bool has_a = expected.next(a), has_b = actual.next(b);
+    if (!has_a && !has_b) return result;
+    const std::size_t ordinal = result.compared + 1;
+    if (!has_b) {
+      result.divergence = Divergence{ordinal, "the NC program ends here; the toolpath goes on", a, std::nullopt};
+      return result;
+    }
+    if (!has_a) {
+      result.divergence = Divergence{ordinal, "the NC program goes on after the toolpath ends", std::nullopt, b};
+      return result;
+    }
+    if (std::string what = difference(a, b, tolerances); !what.empty()) {
+      result.divergence = Divergence{ordinal, what, a, b};
+      return result;
+    }
+    ++result.compared;
+  }
+}
+
+std::string describe(const Motion& m) {
+  switch (m.kind) {
+    case MotionKind::Rapid: return "rapid to " + point_text(m.to, m.known);
+    case MotionKind::Feed: return fmt::format("feed to {} F{}", point_text(m.to, m.known), m.feed);
+    case MotionKind::Arc:
+      return fmt::format("arc {} {} to {} centre {} R{:.4f} sweep {:.4f} F{}", m.arc.direction == geo::Direction::CW ? "CW" : "CCW",
+                         geo::plane_name(m.arc.plane), point_text(m.to, m.known), point_text(m.arc.centre, {true, true, true}),
+                         m.arc.radius, m.arc.sweep, m.feed);
+    case MotionKind::Dwell: return fmt::format("dwell {} s", m.seconds);
+    case MotionKind::Tool: return fmt::format("tool change T{}", m.tool);
+    case MotionKind::Spindle:
+      return m.spindle == 0 ? std::string("spindle off") : fmt::format("spindle {} S{}", m.spindle > 0 ? "CW" : "CCW", m.speed);
+    case MotionKind::Other: return m.name;
+  }
+  return "?";
+}
+
+}  // namespace postproc::verify

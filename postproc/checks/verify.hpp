@@ -1,0 +1,120 @@
+// Closed-loop verification (`postproc verify`): a job is posted with a PikoCNC post, the NC program
+// is read back with the PikoCNC controller model, and the motion it makes is compared with the
+// motion of the toolpath the post received (after the PRP filters). docs/pikocnc.md, "verify".
+//
+// Both sides become the same kind of events (rapid, feed, arc, dwell, tool, spindle), normalised
+// alike: moves shorter than the tolerance are dropped, consecutive collinear moves of one kind and
+// feed are joined, spindle events that change nothing are dropped. Then they are compared in order.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "postproc/engine/engine.hpp"
+#include "toolpath/command.hpp"
+#include "toolpath/geometry.hpp"
+
+namespace prp {
+class MachineParameters;
+}
+
+namespace postproc::verify {
+
+enum class MotionKind : std::uint8_t { Rapid, Feed, Arc, Dwell, Tool, Spindle, Other };
+
+struct Motion {
+  MotionKind kind = MotionKind::Rapid;
+  // Moves: end point, and which of its axes are known (a move after an unknown start may leave an
+  // axis where it was); `from` is the start, valid when every axis of it is known.
+  Eigen::Vector3d from = Eigen::Vector3d::Zero();
+  Eigen::Vector3d to = Eigen::Vector3d::Zero();
+  std::array<bool, 3> known{true, true, true};
+  bool from_known = false;
+  double feed = 0.0;                // Feed, Arc
+  toolpath::geometry::Arc arc;      // Arc (its start and end are `from` and `to`)
+  double seconds = 0.0;             // Dwell
+  std::int64_t tool = 0;            // Tool
+  int spindle = 0;                  // Spindle: 1 CW (M3), -1 CCW (M4), 0 off
+  double speed = 0.0;               // Spindle
+  std::string name;                 // the command that made it ("@line"), for reports
+  std::size_t where = 0;            // expected: command index in the stream; actual: NC line
+};
+
+class MotionSource {
+public:
+  virtual ~MotionSource() = default;
+  virtual bool next(Motion& out) = 0;
+};
+
+struct Tolerances {
+  double position = 0.001;  // mm: end points, centres, radii (and the arc length of sweeps)
+  double feed = 0.001;      // mm/min
+  double seconds = 0.001;   // dwell
+};
+
+// The toolpath side. Collects the commands the post received (Engine's RunOptions::posted), then
+// yields their motion with subroutine calls and loops expanded (a body called N times, or in a
+// loop of N, runs N times). The commands wait in temporary files, not in memory: memory does not
+// grow with the job. Throws std::runtime_error when no temporary file can be made.
+class ExpectedMotion {
+public:
+  explicit ExpectedMotion(const prp::MachineParameters& machine);
+  ~ExpectedMotion();
+  void add(const toolpath::Command& command);
+  // Throws std::runtime_error naming the command when the stream has something verify cannot model,
+  // and when the calls and loops would run more than `max_commands` commands (a runaway count).
+  static constexpr std::uint64_t default_max_commands = 1'000'000'000;
+  std::unique_ptr<MotionSource> motion(std::uint64_t max_commands = default_max_commands);
+
+private:
+  struct Data;
+  std::unique_ptr<Data> data_;
+};
+
+// The NC side: the motion the PikoCNC model makes for an NC program (dialect 2025, cutter radius
+// compensation off: the programmed path is compared). Events carry their NC line.
+std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program);
+
+// Drops moves shorter than the tolerance, joins collinear moves, drops spindle events that change
+// nothing. `source` must outlive the result.
+std::unique_ptr<MotionSource> normalised(MotionSource& source, const Tolerances& tolerances);
+
+struct Divergence {
+  std::size_t ordinal = 0;             // 1-based number of the event pair that differs
+  std::string what;                    // "end point differs by 0.5 mm", "the NC program ends early", ...
+  std::optional<Motion> expected, actual;
+};
+
+struct Result {
+  std::size_t compared = 0;            // event pairs that matched
+  std::optional<Divergence> divergence;
+};
+
+// Compares two normalised sources event by event; stops at the first divergence.
+Result compare(MotionSource& expected, MotionSource& actual, const Tolerances& tolerances);
+
+// One line for a report: "rapid to X1 Y2 Z3", "arc CCW XY to ... centre ... R5 sweep 90", ...
+std::string describe(const Motion& motion);
+
+struct JobReport {
+  Result result;
+  std::filesystem::path program;   // the NC program that was read back (removed unless kept)
+  std::string expected_command;    // "command #21 @arc" of the expected side of a divergence
+  std::string nc_line;             // "NAME.NC:42: G2 X40. Y5. I0. J5." of the actual side
+};
+
+// Posts `job` with the engine (post and PRP of `engine_options`), reads the main NC program back
+// and compares. The program is written to `keep_program` when given, else to a temporary folder
+// that is removed. Throws what Engine and the readers throw (errors in the inputs).
+JobReport verify_job(const EngineOptions& engine_options, const std::string& job, const Tolerances& tolerances,
+                     const std::optional<std::filesystem::path>& keep_program = std::nullopt);
+
+}  // namespace postproc::verify

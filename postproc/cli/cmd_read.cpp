@@ -1,0 +1,82 @@
+// `postproc read FILE`: reads a command stream (a `.trace`, or NC code of a modelled controller)
+// and prints it in the canonical trace form.
+#include <fmt/format.h>
+
+#include <map>
+#include <memory>
+#include <ostream>
+
+#include "machines/pikocnc/reader.hpp"
+#include "postproc/cli/cli.hpp"
+#include "postproc/cli/open_input.hpp"
+#include "toolpath/trace_reader.hpp"
+#include "toolpath/trace_writer.hpp"
+
+namespace postproc::cli {
+
+std::unique_ptr<toolpath::CommandSource> open_source(const std::string& path, const std::string& dialect,
+                                                     std::ostream& warnings, bool nc_lines) {
+  if (dialect == "trace") return toolpath::TraceReader::open(path);
+  const auto piko = pikocnc::parse_dialect(dialect);
+  if (!piko) throw UsageError{"unknown dialect `" + dialect + "` (known: trace, pikocnc, pikocnc-2016, pikocnc-2025)"};
+  pikocnc::Options options;
+  options.dialect = *piko;
+  options.nc_lines_in_trace = nc_lines;
+  struct Reporting final : toolpath::CommandSource {
+    std::unique_ptr<pikocnc::PikoReader> reader;
+    std::ostream& warnings;
+    Reporting(std::unique_ptr<pikocnc::PikoReader> r, std::ostream& w) : reader(std::move(r)), warnings(w) {}
+    bool next(toolpath::Command& out) override {
+      if (reader->next(out)) return true;
+      const auto& d = reader->diagnostics();
+      for (const auto& x : d.kept())
+        warnings << fmt::format("{}:{}:{}: warning: {}\n", reader->file_name(), x.line, x.column, x.message);
+      if (d.total() > d.kept().size())
+        warnings << fmt::format("{}: {} more warnings not shown\n", reader->file_name(), d.total() - d.kept().size());
+      return false;
+    }
+  };
+  return std::make_unique<Reporting>(pikocnc::PikoReader::open(path, options), warnings);
+}
+
+namespace {
+
+int run_read(const Arguments& args, std::ostream& out, std::ostream& err) {
+  if (args.positional().size() != 1) throw UsageError{"expected one input file"};
+  auto reader = open_source(args.positional()[0], args.value("--dialect", "trace"), err, args.has("--nc-lines"));
+  toolpath::Command command;
+  if (args.has("--summary")) {
+    std::map<std::string, std::size_t> counts;
+    std::size_t total = 0, stream = 0;
+    while (reader->next(command)) {
+      ++counts[command.name];
+      ++total;
+      stream += command.is_stream_command();
+    }
+    out << fmt::format("{}: {} commands ({} stream commands)\n", args.positional()[0], total, stream);
+    for (const auto& [name, n] : counts) out << fmt::format("  {:<24}{:>8}\n", name, n);
+    return kOk;
+  }
+  toolpath::TraceWriter writer(out);
+  while (reader->next(command)) writer.write(command);
+  writer.flush();
+  return kOk;
+}
+
+}  // namespace
+
+Subcommand read_command() {
+  return {
+      "read",
+      "postproc read [--dialect NAME] [--summary] FILE",
+      "Read a command stream (or NC code) and print it in canonical trace form.",
+      {
+          {"--dialect", "", true, "input format: trace (default), pikocnc (= pikocnc-2025), pikocnc-2016"},
+          {"--summary", "", false, "print the number of commands of each kind instead"},
+          {"--nc-lines", "", false, "G-code input: attach each NC line to the first command it produced"},
+      },
+      run_read,
+  };
+}
+
+}  // namespace postproc::cli

@@ -1,0 +1,71 @@
+// `postproc verify --post P.gpp [--prp P.prp] JOB.trace`: posts a job with a PikoCNC post, reads
+// the NC program back with the PikoCNC model and compares the motion with the toolpath.
+#include <fmt/format.h>
+
+#include <ostream>
+#include <string>
+
+#include "postproc/cli/cli.hpp"
+#include "postproc/cli/cli_support.hpp"
+#include "postproc/checks/verify.hpp"
+
+namespace postproc::cli {
+namespace {
+
+double positive_number(const Arguments& args, std::string_view option, double fallback) {
+  if (!args.has(option)) return fallback;
+  std::string text = args.value(option);
+  try {
+    std::size_t used = 0;
+    double v = std::stod(text, &used);
+    if (used == text.size() && v > 0) return v;
+  } catch (const std::exception&) {
+  }
+  throw UsageError{fmt::format("{} needs a positive number, not `{}`", option, text)};
+}
+
+void print_side(std::ostream& out, std::string_view label, const std::optional<verify::Motion>& m) {
+  out << fmt::format("  {:<9}{}\n", label, m ? verify::describe(*m) : std::string("(nothing)"));
+}
+
+int run_verify(const Arguments& args, std::ostream& out, std::ostream& err) {
+  if (args.positional().size() != 1) throw UsageError{"expected one job file"};
+  EngineOptions engine_opts = engine_options(args, &err);
+  verify::Tolerances tolerances;
+  tolerances.position = positive_number(args, "--tolerance", tolerances.position);
+  std::optional<std::filesystem::path> keep;
+  if (args.has("--nc")) keep = args.value("--nc");
+
+  const std::string& job = args.positional()[0];
+  verify::JobReport report = verify::verify_job(engine_opts, job, tolerances, keep);
+  const auto& r = report.result;
+  if (!r.divergence) {
+    if (!args.has("--quiet")) out << fmt::format("{}: ok, {} motion events match\n", job, r.compared);
+    return kOk;
+  }
+  const auto& d = *r.divergence;
+  out << fmt::format("{}: divergence at motion event {}: {}\n", job, d.ordinal, d.what);
+  out << fmt::format("  toolpath: {}\n", report.expected_command.empty() ? "(ended)" : report.expected_command);
+  out << fmt::format("  NC:       {}\n", report.nc_line.empty() ? "(ended)" : report.nc_line);
+  print_side(out, "expected", d.expected);
+  print_side(out, "actual", d.actual);
+  return kBadInput;
+}
+
+}  // namespace
+
+Subcommand verify_command() {
+  std::vector<OptionSpec> options = engine_option_specs();
+  options.push_back({"--tolerance", "", true, "mm by which positions, centres and radii may differ (default 0.001)"});
+  options.push_back({"--nc", "", true, "also write the NC program that was read back to this file"});
+  options.push_back({"--quiet", "-q", false, "print nothing when the motion matches"});
+  return {
+      "verify",
+      "postproc verify --post P.gpp [--prp P.prp] [--tolerance MM] [--nc FILE] JOB.trace",
+      "Post a job with a PikoCNC post, read the NC back with the PikoCNC model, compare the motion.",
+      options,
+      run_verify,
+  };
+}
+
+}  // namespace postproc::cli

@@ -1,0 +1,376 @@
+#include "postproc/engine/engine.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <utility>
+
+#include "gppl/gppl.hpp"
+#include "gppl/system_variables.hpp"
+#include "postproc/engine/directive.hpp"
+#include "postproc/engine/engine_sink.hpp"
+#include "postproc/engine/enumerations.hpp"
+#include "postproc/engine/host_variables.hpp"
+#include "postproc/engine/line_numbers.hpp"
+#include "postproc/engine/parameter_binding.hpp"
+#include "postproc/engine/structure.hpp"
+#include "toolpath/prefetch.hpp"
+#include "toolpath/short_text.hpp"
+#include "toolpath/value.hpp"
+
+namespace postproc {
+namespace {
+
+using toolpath::iequals;
+
+// Only depth 0 and 1 commands are the stream; deeper ones record calls the original post made itself.
+class StreamCommands final : public toolpath::CommandSource {
+public:
+  explicit StreamCommands(toolpath::CommandSource& inner) : inner_(inner) {}
+  bool next(toolpath::Command& out) override {
+    while (inner_.next(out))
+      if (out.is_stream_command()) return true;
+    return false;
+  }
+
+private:
+  toolpath::CommandSource& inner_;
+};
+
+// The unit system a job states in its @start_of_file (`inch_system`); metric when it does not.
+prp::Units job_units(const toolpath::Command* first) {
+  if (!first || !iequals(first->name, "@start_of_file")) return prp::Units::Metric;
+  const toolpath::Value* inch = first->find("inch_system");
+  if (!inch) return prp::Units::Metric;
+  bool is_inch = inch->kind == toolpath::ValueKind::Logical ? inch->logical : inch->as_number() != 0;
+  return is_inch ? prp::Units::Inch : prp::Units::Metric;
+}
+
+struct TransparentHash {
+  using is_transparent = void;
+  std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+};
+
+std::string default_main_name(const std::string& g_file_name, const std::string& extension) {
+  std::string name = g_file_name;
+  bool has_extension = std::filesystem::path(name).has_extension();
+  if (!has_extension && !extension.empty()) name += "." + extension;
+  return name;
+}
+
+class Session {
+public:
+  Session(const Engine& engine, std::shared_ptr<const gppl::Program> program, OutputFiles& files,
+          const RunOptions& options)
+      : engine_(engine),
+        options_(options),
+        files_(files),
+        enums_(engine.drill_cycle_names()),
+        sink_(files, options.observer),
+        uses_line_functions_(gppl::uses_line_functions(*program)),
+        interpreter_(std::move(program), sink_),
+        binding_(interpreter_, enums_),
+        line_numbers_(interpreter_, files, options.observer, [this] {
+          return sink_.command_name.empty() ? std::string()
+                                            : fmt::format("command #{} {}", sink_.command_index, sink_.command_name);
+        }) {
+    sink_.line_numbers = &line_numbers_;
+    interpreter_.set_trace_stream(options.trace);
+    interpreter_.set_log_stream(engine.options().log);
+    if (!engine.options().answers.empty()) interpreter_.set_answers(engine.options().answers);
+    interpreter_.set_limits(engine.options().max_loop_iterations, engine.options().max_call_depth);
+    for (const auto& c : enums_.constants())
+      if (auto id = interpreter_.find_variable(c.name)) interpreter_.assign(*id, gppl::Value::of_integer(c.code));
+    // Integer constants of the system table are words a trace sends (tool types: `tool_type:face_mill`):
+    // each holds the code that word gets, so `tool_type eq face_mill` compares codes.
+    for (const auto& v : gppl::system_variables())
+      if (v.source == gppl::VariableSource::Constant && v.type == gppl::Type::Integer)
+        if (auto id = interpreter_.find_variable(v.name)) interpreter_.assign(*id, gppl::Value::of_integer(enums_.code(v.name)));
+    prev_command_ = interpreter_.find_variable("prev_command");
+    current_command_ = interpreter_.find_variable("current_command");
+    next_command_ = interpreter_.find_variable("next_command");
+    if (prev_command_ && current_command_ && next_command_)
+      command_names_ = std::array<gppl::VariableId, 3>{*prev_command_, *current_command_, *next_command_};
+    for (const auto* cycle : engine.machine().records("drill_type"))
+      for (const auto& p : cycle->params) drill_parameters_.push_back(p);
+    fill_run_values();
+    // PRP external variables start with their declared value, or inactive until a command sets them.
+    for (const auto& v : engine.machine().external_variables()) {
+      auto id = interpreter_.find_variable(v.name);
+      if (!id) continue;
+      if (v.initial)
+        interpreter_.assign(*id, binding_.convert(*v.initial, v.type == prp::VarType::String));
+      else
+        interpreter_.set_active(*id, false);
+    }
+  }
+
+  RunSummary run(toolpath::CommandSource& input) {
+    RunSummary summary;
+    sink_.command_name = "@init_post";
+    guarded([&] { interpreter_.start(); });
+    // Three stages overlap: reading the job, the PRP's filters, the post. Reading gets a thread of
+    // its own because a filter may have to take in the whole job before it hands anything on
+    // (gen_procs: @start_of_file names the last subroutine label).
+    StreamCommands stream(input);
+    // The PRP half follows the job's unit system, which the first command states; it must be
+    // chosen before the filters compare anything against the PRP's tolerances.
+    toolpath::LookaheadSource first(stream);
+    summary.units = engine_.options().units.value_or(job_units(first.peek()));
+    machine_ = &engine_.machine(summary.units);
+    toolpath::PrefetchSource read_ahead(first);
+    auto filtered = prp::build_filter_chain(*machine_, read_ahead);
+    toolpath::PrefetchSource prefetched(*filtered);
+    // Three commands in rotation: the one before (its name is prev_command), the current one and
+    // the one after it (next_command, read before the current one runs): no name is copied.
+    std::array<toolpath::Command, 3> rotation;
+    toolpath::Command* previous = nullptr;
+    toolpath::Command* current = &rotation[0];
+    toolpath::Command* following = &rotation[1];
+    toolpath::Command* spare = &rotation[2];
+    for (bool more = prefetched.next(*current); more;) {
+      ++summary.commands;
+      sink_.begin_command(current->index, current->name);
+      more = prefetched.next(*following);
+      guarded([&] {
+        execute(*current, previous ? std::string_view(previous->name) : std::string_view{},
+                more ? std::string_view(following->name) : std::string_view{}, summary);
+      });
+      toolpath::Command* reused = previous ? previous : spare;
+      previous = std::exchange(current, following);
+      following = reused;
+      if (options_.progress && (summary.commands & 4095) == 0) options_.progress(summary.commands);
+    }
+    sink_.end_commands();
+    guarded([&] { interpreter_.finish(); });
+    if (uses_line_functions_) guarded([&] { line_numbers_.finish(); });
+    auto print_file_size = interpreter_.find_variable("print_file_size");
+    guarded([&] { files_.finish_placeholders(print_file_size && interpreter_.value(*print_file_size).integer == 1); });
+    if (files_.main_path().empty()) name_main_file(default_main_name(input_stem(), engine_.file_extension()));
+    summary.lines = sink_.lines;
+    return summary;
+  }
+
+private:
+  // What the engine needs to know about a command name, looked up once per name.
+  struct CommandInfo {
+    std::optional<gppl::ProcedureId> procedure;
+    ParameterBinding::Positions positions;  // parameters outside the catalogue, by position
+    // What execute() does besides assigning, decided once per name instead of by name tests.
+    bool start_of_file = false;
+    bool starts_body = false;
+    bool calls_subroutine = false;
+    bool drill = false;
+    bool structural = false;  // ProgramStructure::before() has something to do
+  };
+
+  template <class F>
+  void guarded(F&& f) {
+    try {
+      f();
+    } catch (const gppl::Error& e) {
+      fail(e.what());
+    } catch (const DirectiveError& e) {
+      fail(e.what());
+    } catch (const toolpath::InputError&) {
+      throw;  // the stream itself is malformed: its own position says it all
+    } catch (const RunError&) {
+      throw;
+    } catch (const std::runtime_error& e) {
+      fail(e.what());
+    }
+  }
+
+  [[noreturn]] void fail(const std::string& what) const {
+    std::string where = sink_.command_name.empty()
+                            ? std::string("at the end of the run")
+                            : fmt::format("command #{} {}", sink_.command_index, sink_.command_name);
+    throw RunError(fmt::format("{}: {}: {}", options_.input_name, where, what));
+  }
+
+  std::string input_stem() const {
+    std::string stem = std::filesystem::path(options_.input_name).stem().string();
+    return stem.empty() ? "output" : stem;
+  }
+
+  void name_main_file(const std::string& default_name) {
+    files_.set_main_path(options_.main_path ? options_.main_path(default_name) : std::filesystem::path(default_name));
+  }
+
+  // The command names seen last come first (a job alternates a few names: @line, @arc, ...).
+  CommandInfo& info(std::string_view name) {
+    for (auto& [seen, found] : recent_)
+      if (found && toolpath::same_short_text(seen, name)) return *found;
+    auto it = commands_.find(name);
+    if (it == commands_.end()) {
+      toolpath::Command probe;
+      probe.name = std::string(name);
+      CommandInfo made{interpreter_.find_procedure(name), {}};
+      made.start_of_file = iequals(name, "@start_of_file");
+      made.starts_body = ProgramStructure::starts_body(probe);
+      made.calls_subroutine = ProgramStructure::calls_subroutine(probe);
+      made.drill = iequals(name, "@drill");
+      made.structural = ProgramStructure::concerns(probe);
+      it = commands_.emplace(std::string(name), std::move(made)).first;
+    }
+    std::move_backward(recent_.begin(), recent_.end() - 1, recent_.end());
+    recent_.front() = {it->first, &it->second};
+    return it->second;
+  }
+
+  void set_string(const std::optional<gppl::VariableId>& id, std::string_view text) {
+    if (id) interpreter_.assign_string(*id, text);
+  }
+
+  // Optional parameters a command did not supply are inactive (gppl-language.md 1.2).
+  void deactivate_missing(const toolpath::Command& command, const CommandInfo& info) {
+    auto deactivate = [&](std::string_view name) {
+      if (command.find(name)) return;
+      if (const ParameterBinding::Slot& s = binding_.slot(name); s.id) interpreter_.set_active(*s.id, false);
+    };
+    if (info.calls_subroutine) {
+      for (std::string_view name : {"message", "parm1", "parm2", "parm3"}) deactivate(name);
+    } else if (info.drill) {
+      for (const auto& name : drill_parameters_) deactivate(name);
+    }
+  }
+
+  void execute(toolpath::Command& command, std::string_view previous, std::string_view next, RunSummary& summary) {
+    CommandInfo& command_info = info(command.name);
+    if (command_info.structural) structure_.before(command);
+    if (command_info.start_of_file) start_of_file(command);
+    if (options_.posted) options_.posted(command);
+    bool reset = engine_.options().reset_modal_memory_at_subroutines;
+    if (reset && command_info.starts_body) interpreter_.reset_change_memory();
+
+    binding_.assign_all(command, command_info.positions);
+    deactivate_missing(command, command_info);
+    if (command_names_) {
+      const std::array<std::string_view, 3> names{previous, command.name, next};
+      interpreter_.assign_strings(*command_names_, names);
+    } else {
+      set_string(prev_command_, previous);
+      set_string(current_command_, command.name);
+      set_string(next_command_, next);
+    }
+
+    if (!command_info.procedure) {
+      ++summary.skipped;
+      if (uses_line_functions_) line_numbers_.command_without_procedure(command.name);
+      interpreter_.trace_unhandled(command.name);
+    } else if (interpreter_.call(*command_info.procedure) == gppl::RunResult::Abort) {
+      throw std::runtime_error("the post stopped the run (`abort` in " + command.name + ")");
+    }
+    if (reset && command_info.calls_subroutine) interpreter_.reset_change_memory();
+  }
+
+  // System variables the run knows before the job says anything (docs/system-variables.md, source
+  // "run"); a command of the job that carries one assigns it again, so the trace wins.
+  void fill_run_values() {
+    const std::filesystem::path job(options_.input_name);
+    set_string(interpreter_.find_variable("part_name"), input_stem());
+    set_string(interpreter_.find_variable("part_full_name"), (job.parent_path() / job.stem()).string());
+    set_string(interpreter_.find_variable("path_part"), job.parent_path().string());
+    set_string(interpreter_.find_variable("pre_processor"), std::filesystem::path(engine_.options().post).stem().string());
+  }
+
+  // Names the main file, and completes the subroutine numbers the stream left out.
+  void start_of_file(toolpath::Command& command) {
+    const toolpath::Value* name = command.find("g_file_name");
+    std::string base = name && !name->text.empty() ? name->text : input_stem();
+    name_main_file(default_main_name(base, engine_.file_extension()));
+    // The trace's own full_g_file_name, when it has one, is assigned after this and wins.
+    if (!options_.main_path) return;
+    std::error_code ignored;
+    const auto full = std::filesystem::absolute(files_.main_path(), ignored);
+    set_string(interpreter_.find_variable("full_g_file_name"), full.string());
+    if (!command.find("first_user_proc") && options_.reopen) derive_procedure_numbers(command);
+  }
+
+  // first_user_proc is the label after the last subroutine of the stream; the post's
+  // num_user_procs (set in @init_post) user subroutines follow it (gpptool-commands.md 2.8).
+  void derive_procedure_numbers(toolpath::Command& command) {
+    std::int64_t low = 0, high = 0;
+    auto source = options_.reopen();
+    toolpath::Command c;
+    while (source->next(c)) {
+      if (!c.is_stream_command() || !(ProgramStructure::starts_body(c) || ProgramStructure::calls_subroutine(c))) continue;
+      const toolpath::Value* label = c.find("label");
+      if (!label) continue;
+      auto l = static_cast<std::int64_t>(label->kind == toolpath::ValueKind::Integer ? label->integer : label->as_number());
+      low = low == 0 ? l : std::min(low, l);
+      high = std::max(high, l);
+    }
+    std::int64_t first_label = prp::procedure_numbers(*machine_).dflt.value_or(1);
+    std::int64_t user_procs = 0;
+    if (auto id = interpreter_.find_variable("num_user_procs")) user_procs = interpreter_.value(*id).integer;
+    std::int64_t first_user = high > 0 ? high + 1 : first_label;
+    command.set("first_user_proc", toolpath::Value::make_integer(first_user));
+    if (!command.find("first_proc_number"))
+      command.set("first_proc_number", toolpath::Value::make_integer(low > 0 ? low : first_user));
+    if (!command.find("last_proc_number"))
+      command.set("last_proc_number", toolpath::Value::make_integer(user_procs > 0 ? first_user + user_procs - 1 : high));
+  }
+
+  const Engine& engine_;
+  const prp::MachineParameters* machine_ = nullptr;  // the half of the PRP this run uses
+  const RunOptions& options_;
+  OutputFiles& files_;
+  Enumerations enums_;
+  EngineSink sink_;
+  bool uses_line_functions_;
+  gppl::Interpreter interpreter_;
+  ParameterBinding binding_;
+  LineNumbers line_numbers_;
+  ProgramStructure structure_;
+  std::optional<gppl::VariableId> prev_command_, current_command_, next_command_;
+  std::optional<std::array<gppl::VariableId, 3>> command_names_;  // all three: assigned in one call
+  std::vector<std::string> drill_parameters_;
+  std::unordered_map<std::string, CommandInfo, TransparentHash, std::equal_to<>> commands_;
+  std::array<std::pair<std::string_view, CommandInfo*>, 4> recent_{};  // names point into commands_
+};
+
+}  // namespace
+
+Engine::Engine(EngineOptions options) : options_(std::move(options)) {
+  auto load = [&](prp::Units units) { return options_.prp.empty() ? prp::defaults(units) : prp::load_file(options_.prp, units); };
+  prp_metric_ = load(prp::Units::Metric);
+  prp_inch_ = load(prp::Units::Inch);
+  Enumerations enums(drill_cycle_names());
+  gppl::CompileOptions compile;
+  compile.host_variables = host_variables(enums, machine());
+  compile.include_paths = options_.include_paths;
+  compile.undeclared_from_job = true;  // a name nothing declares is the job's, or an error where used
+  program_ = gppl::compile_file(options_.post, compile);
+  for (const std::string& warning : gppl::check_answers(*program_, options_.answers))
+    if (options_.log) *options_.log << warning << '\n';
+}
+
+Engine::~Engine() = default;
+
+const prp::MachineParameters& Engine::machine(prp::Units units) const {
+  return units == prp::Units::Inch ? prp_inch_ : prp_metric_;
+}
+
+std::string Engine::file_extension() const {
+  const prp::Parameter* p = machine().find("gpp_file_ext");
+  return p ? p->text : std::string();
+}
+
+std::vector<std::string> Engine::drill_cycle_names() const {
+  std::vector<std::string> names;
+  for (const auto* r : machine().records("drill_type")) names.push_back(r->name);
+  return names;
+}
+
+RunSummary Engine::run(toolpath::CommandSource& input, OutputFiles& output, const RunOptions& options) const {
+  Session session(*this, program_, output, options);
+  return session.run(input);
+}
+
+}  // namespace postproc

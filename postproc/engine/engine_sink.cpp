@@ -1,0 +1,55 @@
+#include "postproc/engine/engine_sink.hpp"
+
+#include <optional>
+
+#include "postproc/engine/directive.hpp"
+
+namespace postproc {
+
+void EngineSink::write_line(std::string_view line, const gppl::LineOrigin& origin) {
+  std::size_t first = 0;  // a directive may be indented (find_first_not_of costs a memchr per character)
+  while (first < line.size() && (line[first] == ' ' || line[first] == '\t')) ++first;
+  const bool maybe_directive = first < line.size() && line[first] == '!';
+  if (!maybe_directive && !observer_) {  // the usual line: straight to the file
+    files_.write_line(line);
+    ++lines;
+    return;
+  }
+  write_observed(line, origin, maybe_directive);
+}
+
+void EngineSink::write_observed(std::string_view line, const gppl::LineOrigin& origin, bool maybe_directive) {
+  std::optional<Directive> directive = maybe_directive ? parse_directive(line) : std::nullopt;
+  if (observer_) {
+    // The line was started by the command that flushed the line before it (nb and nl flush the
+    // open line and open the next one), unless this command already flushed one.
+    bool own = wrote_in_command_;
+    file_name_ = files_.current_name();
+    LineEvent e{file_name_, line, directive.has_value(), files_.current_is_main(),
+                {own ? command_index : opener_index_, own ? command_name : std::string_view(opener_name_),
+                 origin.procedure, origin.source_line}};
+    observer_->on_line(e);
+    opener_index_ = command_index;
+    opener_name_ = command_name;
+    wrote_in_command_ = true;
+  }
+  if (directive) {
+    if (observer_ && directive->verb == Directive::Verb::Copy) {
+      // The copied text becomes lines of the current file, attributed to the command that copies.
+      LineEvent copied{file_name_, {}, false, files_.current_is_main(),
+                       {command_index, command_name, origin.procedure, origin.source_line}};
+      files_.execute(*directive, [&](std::string_view text) {
+        copied.text = text;
+        observer_->on_line(copied);
+        ++lines;
+      });
+    } else {
+      files_.execute(*directive);
+    }
+  } else {
+    files_.write_line(line);
+    ++lines;
+  }
+}
+
+}  // namespace postproc

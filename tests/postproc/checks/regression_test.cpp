@@ -1,0 +1,128 @@
+// Line comparison options and the streaming regression comparer.
+#include <gtest/gtest.h>
+
+#include <deque>
+
+#include "postproc/checks/line_compare.hpp"
+#include "postproc/checks/regression.hpp"
+
+namespace {
+
+using postproc::CompareOptions;
+using postproc::lines_match;
+
+TEST(LineCompare, OptionsTable) {
+  CompareOptions none;
+  CompareOptions blocks;
+  blocks.ignore_block_numbers = true;
+  CompareOptions trailing;
+  trailing.ignore_trailing_blanks = true;
+  CompareOptions leading;
+  leading.ignore_leading_blanks = true;
+  CompareOptions dates;
+  dates.ignore_datetime = true;
+  CompareOptions tolerance;
+  tolerance.numeric_tolerance = 0.001;
+  struct Case {
+    const char* expected;
+    const char* actual;
+    const CompareOptions* options;
+    bool match;
+  } cases[] = {
+      {"G1 X1.", "G1 X1.", &none, true},
+      {"G1 X1.", "G1 X1. ", &none, false},
+      {"G1 X1.", "G1 X1.  ", &trailing, true},
+      {"N10 G1 X1.", "N20 G1 X1.", &none, false},
+      {"N10 G1 X1.", "N20 G1 X1.", &blocks, true},
+      {"N10 G1 X1.", "G1 X1.", &blocks, true},
+      {"N10 G1 X1.", "N10 G1 X2.", &blocks, false},
+      {"NOSE", "NOSE", &blocks, true},
+      {"   Z2.", "  Z2.", &none, false},
+      {"   Z2.", "  Z2.", &leading, true},
+      {"(DATE 21.11.2025 TIME 12:05)", "(DATE 01.02.2026 TIME 9:41:07)", &dates, true},
+      {"(DATE 21-NOV-2025)", "(DATE 3-DEC-2026)", &dates, true},
+      {"; posted 2025/11/21", "; posted 2026/01/02", &dates, true},
+      {"G1 X12.05 (12:05)", "G1 X12.06 (12:06)", &dates, false},
+      {"(DIA 12.7)", "(DIA 12.8)", &dates, false},
+      {"G1 X-16.35 Y2.", "G1 X-16.3504 Y2.0009", &tolerance, true},
+      {"G1 X-16.35 Y2.", "G1 X-16.352 Y2.", &tolerance, false},
+      {"G1 X-16.35", "G1 Y-16.35", &tolerance, false},
+      {"G1 X1.", "G1 X1. F2", &tolerance, false},
+  };
+  for (const auto& c : cases)
+    EXPECT_EQ(lines_match(c.expected, c.actual, *c.options), c.match) << c.expected << " | " << c.actual;
+}
+
+class Lines final : public postproc::ExpectedLines {
+public:
+  explicit Lines(std::deque<std::string> lines) : lines_(std::move(lines)) {}
+  bool next(postproc::ExpectedLine& out) override {
+    if (lines_.empty()) return false;
+    out.text = lines_.front();
+    out.source.clear();
+    lines_.pop_front();
+    return true;
+  }
+
+private:
+  std::deque<std::string> lines_;
+};
+
+postproc::RegressionComparer comparer_for(std::deque<std::string> main_lines) {
+  return postproc::RegressionComparer(
+      [main_lines](const std::string& stream) -> std::unique_ptr<postproc::ExpectedLines> {
+        if (stream != "OUT.TAP") return nullptr;
+        return std::make_unique<Lines>(main_lines);
+      },
+      {}, "fanuc.gpp");
+}
+
+TEST(RegressionComparer, ReportsTheFirstDifferenceWithItsOrigin) {
+  auto c = comparer_for({"%", "G0 X1.", "G2 X2. R1.", "M30"});
+  postproc::LineOrigin origin{21, "@arc", "@line", 120};
+  c.produced("OUT.TAP", "%", origin);
+  c.produced("OUT.TAP", "G0 X1.", origin);
+  c.produced("OUT.TAP", "   Y2.G2 X2. R1.", origin);
+  c.produced("OUT.TAP", "M30", origin);
+  c.produced("O1.SPF", "sub", origin);
+  c.finish();
+  EXPECT_EQ(c.difference_count(), 1u);
+  EXPECT_EQ(c.lines_compared(), 4u);
+  EXPECT_EQ(c.unmatched_streams(), std::vector<std::string>{"O1.SPF"});
+  EXPECT_EQ(c.report(),
+            "OUT.TAP:3: the output differs from the expected line\n"
+            "  expected: `G2 X2. R1.`\n"
+            "  actual:   `   Y2.G2 X2. R1.`\n"
+            "  produced by command #21 @arc, procedure @line (fanuc.gpp:120)\n");
+}
+
+TEST(RegressionComparer, MissingAndExtraLinesAreDifferences) {
+  auto shorter = comparer_for({"%", "M30", "%"});
+  shorter.produced("OUT.TAP", "%", {});
+  shorter.finish();
+  EXPECT_EQ(shorter.difference_count(), 2u);
+  EXPECT_EQ(shorter.report(),
+            "OUT.TAP:2: the output ended before the expected line\n"
+            "  expected: `M30`\n"
+            "2 differing lines in all\n");
+
+  auto longer = comparer_for({"%"});
+  longer.produced("OUT.TAP", "%", {});
+  longer.produced("OUT.TAP", "M30", {3, "@end_program", "@end_program", 40});
+  longer.finish();
+  EXPECT_EQ(longer.report(),
+            "OUT.TAP:2: the output has more lines than expected\n"
+            "  actual:   `M30`\n"
+            "  produced by command #3 @end_program, procedure @end_program (fanuc.gpp:40)\n");
+}
+
+TEST(RegressionComparer, ExpectedLinesOfATraceAreItsOutputLinesInOrder) {
+  auto lines = postproc::expected_from_trace("toolpath/data/solidcam_layout.trace");
+  postproc::ExpectedLine l;
+  std::vector<std::string> texts;
+  while (lines->next(l)) texts.push_back(l.text);
+  EXPECT_EQ(texts, (std::vector<std::string>{"%", "N10 ; PART", "N20 G17 G90 ", "!! open file = F_contour1.SPF !!",
+                                             "N290 S1910", "N300 G1 X70 Z20.14 F2292", "N400 M30"}));
+}
+
+}  // namespace

@@ -1,0 +1,171 @@
+// `postproc verify`: normalisation and comparison of motion events, a post that gets arcs wrong
+// caught at the right command and NC line, and `run --dialect pikocnc` posting G-code again.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "postproc/cli/cli.hpp"
+#include "tests/support/cli_run.hpp"
+#include "postproc/checks/verify.hpp"
+
+namespace {
+
+using postproc::verify::Motion;
+using postproc::verify::MotionKind;
+
+class VectorSource final : public postproc::verify::MotionSource {
+public:
+  explicit VectorSource(std::vector<Motion> m) : motions_(std::move(m)) {}
+  bool next(Motion& out) override {
+    if (at_ == motions_.size()) return false;
+    out = motions_[at_++];
+    return true;
+  }
+
+private:
+  std::vector<Motion> motions_;
+  std::size_t at_ = 0;
+};
+
+Motion move(MotionKind kind, Eigen::Vector3d from, Eigen::Vector3d to, double feed = 0.0, std::size_t where = 0) {
+  Motion m;
+  m.kind = kind;
+  m.from = from;
+  m.to = to;
+  m.from_known = true;
+  m.feed = feed;
+  m.where = where;
+  return m;
+}
+
+Motion spindle(int state, double speed) {
+  Motion m;
+  m.kind = MotionKind::Spindle;
+  m.spindle = state;
+  m.speed = speed;
+  return m;
+}
+
+std::vector<std::string> normalise(std::vector<Motion> in) {
+  VectorSource source(std::move(in));
+  auto n = postproc::verify::normalised(source, {});
+  std::vector<std::string> out;
+  Motion m;
+  while (n->next(m)) out.push_back(postproc::verify::describe(m));
+  return out;
+}
+
+TEST(VerifyNormalise, JoinsCollinearMovesDropsTinyOnesAndRepeatedSpindleStates) {
+  const Eigen::Vector3d o(0, 0, 10), a(0, 0, 2), b(0, 0, 1), c(0, 0, 1.0004), d(5, 0, 1);
+  auto out = normalise({
+      spindle(1, 3000), spindle(1, 3000),                  // the second changes nothing
+      move(MotionKind::Rapid, o, a), move(MotionKind::Rapid, a, b),  // one rapid down to Z1
+      move(MotionKind::Feed, b, c, 100),                   // 0.0004 mm: dropped
+      move(MotionKind::Feed, c, d, 100), move(MotionKind::Feed, d, {9, 0, 1}, 200),  // feeds differ
+      spindle(0, 0),
+  });
+  EXPECT_EQ(out, (std::vector<std::string>{"spindle CW S3000", "rapid to X0.0000 Y0.0000 Z1.0000",
+                                           "feed to X5.0000 Y0.0000 Z1.0000 F100", "feed to X9.0000 Y0.0000 Z1.0000 F200",
+                                           "spindle off"}));
+}
+
+TEST(VerifyCompare, ReportsTheFirstDifferenceOfEachKind) {
+  namespace geo = toolpath::geometry;
+  const Eigen::Vector3d s(10, 0, 0), e(0, 10, 0), centre(0, 0, 0);
+  auto arc = [&](geo::Direction dir, Eigen::Vector3d c) {
+    Motion m = move(MotionKind::Arc, s, e, 100);
+    m.arc = geo::make_arc(s, e, c, geo::Plane::XY, dir, std::nullopt);
+    return m;
+  };
+  Motion tool;
+  tool.kind = MotionKind::Tool;
+  tool.tool = 3;
+  Motion other_tool = tool;
+  other_tool.tool = 4;
+  struct Case {
+    Motion expected, actual;
+    const char* what;  // empty: equal
+  } cases[] = {
+      {move(MotionKind::Rapid, s, e), move(MotionKind::Rapid, s, e), ""},
+      {move(MotionKind::Rapid, s, e), move(MotionKind::Rapid, s, {0, 10.001, 0}), ""},  // within 0.001
+      {move(MotionKind::Rapid, s, e), move(MotionKind::Rapid, s, {0, 10.002, 0}), "end point differs in Y by 0.0020 mm"},
+      {move(MotionKind::Rapid, s, e), move(MotionKind::Feed, s, e, 100), "expected a rapid, the NC program makes a feed"},
+      {move(MotionKind::Feed, s, e, 100), move(MotionKind::Feed, s, e, 120), "feed 120 instead of 100"},
+      {arc(geo::Direction::CCW, centre), arc(geo::Direction::CCW, centre), ""},
+      {arc(geo::Direction::CCW, centre), arc(geo::Direction::CW, centre), "arc turns the other way"},
+      {arc(geo::Direction::CCW, centre), arc(geo::Direction::CCW, {0.1, 0.1, 0}), "arc centre differs by 0.1414 mm"},
+      {tool, other_tool, "tool 4 instead of 3"},
+      {spindle(1, 3000), spindle(-1, 3000), "spindle spindle CCW S3000 instead of spindle CW S3000"},
+  };
+  for (const auto& c : cases) {
+    VectorSource expected({move(MotionKind::Rapid, {0, 0, 0}, s), c.expected});
+    VectorSource actual({move(MotionKind::Rapid, {0, 0, 0}, s), c.actual});
+    auto r = postproc::verify::compare(expected, actual, {});
+    if (std::string(c.what).empty()) {
+      EXPECT_FALSE(r.divergence) << r.divergence->what;
+      EXPECT_EQ(r.compared, 2u);
+    } else {
+      ASSERT_TRUE(r.divergence) << c.what;
+      EXPECT_EQ(r.divergence->what, c.what);
+      EXPECT_EQ(r.divergence->ordinal, 2u);
+    }
+  }
+}
+
+TEST(VerifyCompare, OneSideEndingEarlyIsADivergence) {
+  VectorSource expected({move(MotionKind::Rapid, {0, 0, 0}, {1, 0, 0})});
+  VectorSource actual({});
+  auto r = postproc::verify::compare(expected, actual, {});
+  ASSERT_TRUE(r.divergence);
+  EXPECT_EQ(r.divergence->what, "the NC program ends here; the toolpath goes on");
+}
+
+using Run = test_support::CliRun;
+const auto run = test_support::run_cli;
+
+using test_support::slurp;
+
+TEST(VerifyCli, ShippedSampleMatches) {
+  auto r = run({"verify", "--post", "../machines/pikocnc/pikocnc.gpp", "--prp", "../machines/pikocnc/pikocnc.prp",
+                "../docs/examples/sample-job.trace"});
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_EQ(r.out, "../docs/examples/sample-job.trace: ok, 50 motion events match\n");
+}
+
+// A copy of the PikoCNC post that writes G2 for counter-clockwise arcs and G3 for clockwise ones.
+TEST(VerifyCli, PostThatTurnsArcsTheWrongWayIsCaughtAtTheFirstArc) {
+  std::string post = slurp("../machines/pikocnc/pikocnc.gpp");
+  const std::string right = "  if arc_direction eq CCW\n    gcode = 3\n  else\n    gcode = 2\n";
+  const std::string wrong = "  if arc_direction eq CCW\n    gcode = 2\n  else\n    gcode = 3\n";
+  auto at = post.find(right);
+  ASSERT_NE(at, std::string::npos);
+  post.replace(at, right.size(), wrong);
+  const auto dir = std::filesystem::temp_directory_path() / "postproc-verify-test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "wrong-arcs.gpp", std::ios::binary) << post;
+
+  auto r = run({"verify", "--post", (dir / "wrong-arcs.gpp").string(), "--prp", "../machines/pikocnc/pikocnc.prp",
+                "../docs/examples/sample-job.trace"});
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(r.out,
+            "../docs/examples/sample-job.trace: divergence at motion event 9: arc turns the other way\n"
+            "  toolpath: command #13 @arc\n"
+            "  NC:       SAMPLE.NC:18: G2 X40. Y5. I0. J5.\n"
+            "  expected arc CCW XY to X40.0000 Y5.0000 Z-2.0000 centre X35.0000 Y5.0000 Z-2.0000 R5.0000 sweep 90.0000 F400\n"
+            "  actual   arc CW XY to X40.0000 Y5.0000 Z-2.0000 centre X35.0000 Y5.0000 Z-2.0000 R5.0000 sweep 270.0000 F400\n");
+}
+
+// Closing the loop the other way: PikoCNC G-code read back and posted through the Fanuc post.
+TEST(RunDialect, PikoCncProgramPostedAgainThroughTheFanucPost) {
+  auto r = run({"run", "--dialect", "pikocnc", "golden/pikocnc/sample-job/SAMPLE.NC", "--post",
+                "../machines/fanuc/fanuc.gpp", "--prp", "../machines/fanuc/fanuc.prp"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, slurp("golden/pikocnc/fanuc-from-nc/SAMPLE.NC"));
+}
+
+}  // namespace

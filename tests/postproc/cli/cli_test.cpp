@@ -1,0 +1,142 @@
+// The command line: dispatch, help, exit codes, and `read` printing a stream that reads back the same.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "postproc/cli/cli.hpp"
+#include "tests/support/cli_run.hpp"
+
+namespace {
+
+using Run = test_support::CliRun;
+const auto run = test_support::run_cli;
+
+TEST(Cli, ExitCodes) {
+  struct Case {
+    std::vector<std::string> args;
+    int code;
+    const char* err_contains;
+  } cases[] = {
+      {{}, 2, "usage: postproc <command>"},
+      {{"frobnicate"}, 2, "unknown command `frobnicate`"},
+      {{"read"}, 2, "expected one input file"},
+      {{"read", "--bogus", "x"}, 2, "unknown option --bogus"},
+      {{"read", "--dialect"}, 2, "option --dialect needs a value"},
+      {{"read", "--dialect=gcode", "x"}, 2, "unknown dialect `gcode`"},
+      {{"read", "no/such.trace"}, 1, "no/such.trace:0:0: cannot open file"},
+      {{"read", "toolpath/data/bad.trace"}, 1, "toolpath/data/bad.trace:3:6: expected `:` after the parameter name `ypos`"},
+      {{"--help"}, 0, ""},
+      {{"read", "--help"}, 0, ""},
+      {{"--version"}, 0, ""},
+  };
+  for (const auto& c : cases) {
+    auto r = run(c.args);
+    EXPECT_EQ(r.code, c.code) << r.err;
+    EXPECT_NE(r.err.find(c.err_contains), std::string::npos) << r.err;
+  }
+}
+
+// Every subcommand: a wrong command line is exit code 2 with a message naming the command; a
+// missing input file is exit code 1 naming the file; --help is 0.
+TEST(Cli, UsageErrorsOfEverySubcommand) {
+  const std::string post = "../machines/fanuc/fanuc.gpp";
+  struct Case {
+    std::vector<std::string> args;
+    int code;
+    std::string err_contains;
+  } cases[] = {
+      {{"run"}, 2, "postproc run: expected one job file"},
+      {{"run", "job.trace"}, 2, "postproc run: --post is required"},
+      {{"run", "--post"}, 2, "postproc run: option --post needs a value"},
+      {{"run", "--post", post, "a.trace", "b.trace"}, 2, "postproc run: expected one job file"},
+      {{"run", "--post", post, "--units", "mm", "j.trace"}, 2, "postproc run: --units must be metric or inch, not `mm`"},
+      {{"run", "--bogus"}, 2, "postproc run: unknown option --bogus"},
+      {{"run", "--post", "no.gpp", "j.trace"}, 1, "no.gpp:1:1: error 399: Can't open file 'no.gpp'"},
+      {{"run", "--post", post, "--prp", "no.prp", "j.trace"}, 1, "no.prp:0:0: cannot open the PRP file"},
+      {{"run", "--post", post, "no/such.trace"}, 1, "no/such.trace:0:0: cannot open file"},
+      {{"run", "--help"}, 0, ""},
+      {{"check"}, 2, "postproc check: expected one or more .gpp files or machine files (.prp, .mac, .vmid)"},
+      {{"check", "--bogus", "x.gpp"}, 2, "postproc check: unknown option --bogus"},
+      {{"check", "--help"}, 0, ""},
+      {{"test"}, 2, "postproc test: expected one job file"},
+      {{"test", "j.trace"}, 2, "postproc test: --post is required"},
+      {{"test", "j.trace", "--post", post, "--tolerance", "abc"}, 2,
+       "postproc test: --tolerance needs a number >= 0, not `abc`"},
+      {{"test", "no/such.trace", "--post", post}, 1, "no/such.trace:0:0: cannot open file"},
+      {{"test", "--help"}, 0, ""},
+      {{"explain"}, 2, "postproc explain: expected one job file"},
+      {{"explain", "j.trace"}, 2, "postproc explain: --post is required"},
+      {{"explain", "--post", post, "no/such.trace"}, 1, "no/such.trace:0:0: cannot open file"},
+      {{"explain", "--help"}, 0, ""},
+      {{"plot"}, 2, "postproc plot: expected one input file"},
+      {{"plot", "x.trace"}, 2, "postproc plot: -o FILE.svg is required"},
+      {{"plot", "--dialect", "foo", "x.trace", "-o", "o.svg"}, 2, "postproc plot: unknown dialect `foo`"},
+      {{"plot", "--help"}, 0, ""},
+      {{"verify"}, 2, "postproc verify: expected one job file"},
+      {{"verify", "j.trace"}, 2, "postproc verify: --post is required"},
+      {{"verify", "--help"}, 0, ""},
+  };
+  for (const auto& c : cases) {
+    std::string line;
+    for (const auto& a : c.args) line += a + " ";
+    SCOPED_TRACE(line);
+    auto r = run(c.args);
+    EXPECT_EQ(r.code, c.code) << r.err;
+    EXPECT_NE(r.err.find(c.err_contains), std::string::npos) << r.err;
+  }
+}
+
+// `check` prints its findings on stdout and exits 1 when a file cannot be read.
+TEST(Cli, CheckOfMissingFiles) {
+  auto r = run({"check", "no.gpp"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.out, "no.gpp:1:1: error 399: Can't open file 'no.gpp'\nno.gpp: 1 error(s)\n");
+}
+
+// A machine file's warnings reach stderr once per run, although the engine loads the file for both
+// unit systems and the filters run many times.
+TEST(Cli, MachineFileWarningsArePrintedOnce) {
+  const auto dir = std::filesystem::temp_directory_path() / "postproc-cli-machine-warnings";
+  std::filesystem::create_directories(dir);
+  std::string prp = test_support::slurp("../machines/fanuc/fanuc.prp");
+  const auto endp = prp.rfind("endp");
+  ASSERT_NE(endp, std::string::npos);
+  prp.insert(endp, "spare_key = 1\n");
+  const auto path = (dir / "extra.prp").string();
+  std::ofstream(path, std::ios::binary) << prp;
+  auto r = run({"run", "--post", "../machines/fanuc/fanuc.gpp", "--prp", path, "golden/fanuc-sample/job.trace"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  const std::string warning = "warning: unknown key `spare_key`: kept as text for the post";
+  const auto first = r.err.find(warning);
+  ASSERT_NE(first, std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find(warning, first + 1), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(path + ":"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, HelpListsCommandsAndOptions) {
+  EXPECT_NE(run({"--help"}).out.find("read"), std::string::npos);
+  EXPECT_NE(run({"read", "--help"}).out.find("--summary"), std::string::npos);
+}
+
+TEST(Cli, ReadPrintsCanonicalFormThatReadsBackTheSame) {
+  auto first = run({"read", "golden/solidcam-fanuc/toolpath.trace"});
+  ASSERT_EQ(first.code, 0) << first.err;
+  EXPECT_EQ(first.out.rfind("(1)@start_of_file   ==> program_number:5000", 0), 0u);
+  std::size_t headers = 0;
+  for (std::size_t p = 0; (p = first.out.find("\n(1)@", p)) != std::string::npos; ++p) ++headers;
+  EXPECT_EQ(headers + 1, 210u);
+}
+
+TEST(Cli, ReadSummaryCountsCommands) {
+  auto r = run({"read", "--summary", "golden/solidcam-fanuc/toolpath.trace"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("210 commands (210 stream commands)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("@drill_point                   4"), std::string::npos) << r.out;
+}
+
+}  // namespace

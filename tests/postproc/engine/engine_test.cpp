@@ -1,0 +1,179 @@
+// The engine on small posts: parameters and change flags, command names, skipped commands,
+// output directives, errors naming the command, and output left untouched by a failed run.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "postproc/engine/engine.hpp"
+#include "toolpath/trace_reader.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class EngineTest : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("postproc-engine-test-" + std::to_string(::getpid()) + "-" +
+                                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+
+  // Posts `trace` with `post`; returns the main program (stream output) or throws.
+  std::string post(const std::string& gpp, const std::string& trace, const std::string& prp = {},
+                   std::optional<prp::Units> units = {}) {
+    std::ofstream(dir / "p.gpp") << gpp;
+    postproc::EngineOptions engine_options;
+    engine_options.post = (dir / "p.gpp").string();
+    if (!prp.empty()) {
+      std::ofstream(dir / "p.prp") << prp;
+      engine_options.prp = (dir / "p.prp").string();
+    }
+    engine_options.units = units;
+    postproc::Engine engine(engine_options);
+    std::istringstream in(trace);
+    toolpath::TraceReader reader(in, "job.trace");
+    postproc::OutputFiles files(dir, postproc::OutputFiles::LineEnd::LF, true);
+    postproc::RunOptions options;
+    options.input_name = "job.trace";
+    engine.run(reader, files, options);
+    std::ostringstream out;
+    files.commit_to(out);
+    return out.str();
+  }
+
+  fs::path dir;
+};
+
+TEST_F(EngineTest, ParametersChangeFlagsAndCommandNames) {
+  const std::string gpp =
+      "@init_post\n  xpos_f = '5.3'\n  ypos_f = '5.3'\nendp\n"
+      "@line\n  {nl, prev_command, ' ', current_command, ' ', next_command, [' X'xpos], [' Y'ypos]}\nendp\n";
+  const std::string trace =
+      "@start_of_file\n"
+      "@line\nxpos : 1\nypos : 2\n"
+      "@line\nxpos : 1\nypos : 3\n"
+      "@line\nxpos : 1T\nypos : 4F\n"
+      "@tmatrix\n"
+      "@line\nxpos : 5\nypos : 4\n";
+  EXPECT_EQ(post(gpp, trace),
+            "@start_of_file @line @line X1. Y2.\n"
+            "@line @line @line Y3.\n"
+            "@line @line @tmatrix X1.\n"
+            "@tmatrix @line  X5.\n");
+}
+
+// A parameter reaches the variable of its name whatever its spelling and position: catalogue names
+// are bound by their interned key, other names by their position in the command, and both bindings
+// follow a command whose parameters come in another order. Enumeration words are compared without case.
+TEST_F(EngineTest, ParametersBindByNameWhateverTheirSpellingAndOrder) {
+  const std::string gpp =
+      "@init_post\n  xpos_f = '5.3'\n  ypos_f = '5.3'\nendp\n"
+      "@line\n  {nl, xpos, ' ', ypos, ' ', extra_a, ' ', extra_b}\n"
+      "  if side eq COMP_LEFT\n    {' L'}\n  else\n    {' R'}\n  endif\nendp\n";
+  const std::string trace =
+      "@line\nxpos : 1\nypos : 2\nextra_a : 7\nextra_b : 8\nside : COMP_LEFT\n"
+      "@line\nYPOS : 3\nXpos : 4\nextra_b : 9\nextra_a : 10\nside : comp_right\n"
+      "@line\nextra_a : 11\nside : comp_left\nxpos : 5\nextra_b : 12\nypos : 6\n"
+      "@line\nxpos : 5\nypos : 6\nEXTRA_A : 13\nextra_b : 14\nside : COMP_RIGHT\n";
+  EXPECT_EQ(post(gpp, trace),
+            "1. 2. 7 8 L\n"
+            "4. 3. 10 9 R\n"
+            "5. 6. 11 12 L\n"
+            "5. 6. 13 14 R\n");
+}
+
+// The PRP half follows the job's `inch_system`, read from @start_of_file before the filters run;
+// an explicit unit choice overrides it. dflt_start/dflt_end fill the positions the job leaves open.
+TEST_F(EngineTest, PrpHalfFollowsTheJobsUnitSystem) {
+  const std::string prp =
+      "@pre_processor\n"
+      "dflt_start = 0 200 100, 0 7.8740 3.9371\n"
+      "dflt_end = 10 20 30, 0.3937 0.7874 1.1811\n"
+      "endp\n";
+  const std::string gpp =
+      "@init_post\n  xpos_f = '5.4'\n  ypos_f = '5.4'\n  zpos_f = '5.4'\nendp\n"
+      "@start_program\n  {nl, 'S X', xpos, ' Y', ypos, ' Z', zpos}\nendp\n"
+      "@end_program\n  {nl, 'E X', xpos, ' Y', ypos, ' Z', zpos}\nendp\n";
+  auto job = [](const char* inch_system) {
+    return std::string("@start_of_file\n") + inch_system + "@start_program\n@end_program\n";
+  };
+  const std::string metric = "S X0. Y200. Z100.\nE X10. Y20. Z30.\n";
+  const std::string inch = "S X0. Y7.874 Z3.9371\nE X0.3937 Y0.7874 Z1.1811\n";
+  struct Case {
+    const char* inch_system;
+    std::optional<prp::Units> units;
+    std::string expected;
+  };
+  for (const Case& c : {Case{"inch_system : TRUE\n", {}, inch}, Case{"inch_system : FALSE\n", {}, metric},
+                        Case{"", {}, metric}, Case{"inch_system : TRUE\n", prp::Units::Metric, metric},
+                        Case{"inch_system : FALSE\n", prp::Units::Inch, inch}})
+    EXPECT_EQ(post(gpp, job(c.inch_system), prp, c.units), c.expected) << c.inch_system;
+}
+
+// print_file_size = 1: every `$$file_size$$` becomes the final size of its file in bytes, the size
+// with the numbers written in (so the digit count is part of the size).
+TEST_F(EngineTest, FileSizePlaceholderIsReplacedWhenAsked) {
+  const std::string trace = "@start_of_file\n@end_of_file\n";
+  struct Case {
+    std::string init, start, expected;
+  };
+  for (const Case& c : {
+           Case{"  print_file_size = 1\n", "  {nl, '(SIZE $$file_size$$)'}\n  {nl, 'M30'}\n", "(SIZE 14)\nM30\n"},
+           Case{"  print_file_size = 1\n", "  {nl, '$$file_size$$ $$file_size$$'}\n", "4 4\n"},
+           Case{"  print_file_size = 1\n", "  {nl, 'no placeholder'}\n", "no placeholder\n"},
+           Case{"", "  {nl, '(SIZE $$file_size$$)'}\n", "(SIZE $$file_size$$)\n"},
+       })
+    EXPECT_EQ(post("@init_post\n  numeric_def_f = '5.3'\n" + c.init + "endp\n@start_of_file\n" + c.start + "endp\n", trace),
+              c.expected)
+        << c.start;
+}
+
+TEST_F(EngineTest, DirectivesSplitTheOutput) {
+  const std::string gpp =
+      "@start_of_file\n  {'%'}\nendp\n"
+      "@proc\n  {nl, '!!open file=O', label, '.SPF!!'}\n  {nl, 'O', label}\nendp\n"
+      "@end_proc\n  {nl, 'M99'}\n  {nl, '!! close file = O', label, '.SPF !!'}\nendp\n"
+      "@end_of_file\n  {nl, '!!copy file=O1.SPF!!'}\n  {nl, 'M30'}\nendp\n";
+  const std::string trace =
+      "@start_of_file\ng_file_name : 'MAIN.NC'\n"
+      "@proc\nlabel : 1\n@end_proc\n@proc\nlabel : 2\n@end_proc\n@proc\nlabel : 1\n@end_proc\n"
+      "@end_of_file\n";
+  EXPECT_EQ(post(gpp, trace),
+            "==> MAIN.NC <==\n%\nO1\nM99\nO1\nM99\nM30\n\n"
+            "==> O1.SPF <==\nO1\nM99\nO1\nM99\n\n"
+            "==> O2.SPF <==\nO2\nM99\n");
+}
+
+TEST_F(EngineTest, ErrorsNameTheCommandAndLeaveOldFilesAlone) {
+  std::ofstream(dir / "OUT.NC") << "old\n";
+  std::ofstream(dir / "p.gpp") << "@line\n  {nl, 'x'}\n  gcode = 1 / 0\nendp\n";
+  postproc::EngineOptions engine_options;
+  engine_options.post = (dir / "p.gpp").string();
+  postproc::Engine engine(engine_options);
+  std::istringstream in("@start_of_file\ng_file_name : 'OUT.NC'\n@rapid_move\n@line\n");
+  toolpath::TraceReader reader(in, "job.trace");
+  postproc::OutputFiles files(dir);
+  postproc::RunOptions options;
+  options.input_name = "job.trace";
+  options.main_path = [&](const std::string& name) { return dir / name; };
+  try {
+    engine.run(reader, files, options);
+    ADD_FAILURE() << "no error";
+  } catch (const postproc::RunError& e) {
+    EXPECT_EQ(std::string(e.what()), "job.trace: command #2 @line: " + (dir / "p.gpp").string() +
+                                         ":3:13: error 407: Zero divide");
+  }
+  std::ifstream old(dir / "OUT.NC");
+  std::string first;
+  std::getline(old, first);
+  EXPECT_EQ(first, "old");
+}
+
+}  // namespace

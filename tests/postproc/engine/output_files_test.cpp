@@ -1,0 +1,188 @@
+// Output files of one run: directives, append semantics, atomic replacement, stream output.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "postproc/engine/output_files.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using postproc::Directive;
+using postproc::OutputFiles;
+using Verb = Directive::Verb;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class OutputFilesTest : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("postproc-output-test-" + std::to_string(::getpid()) + "-" +
+                                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  std::vector<std::string> listing() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  fs::path dir;
+};
+
+TEST_F(OutputFilesTest, DirectivesSwitchAppendDeleteAndCopy) {
+  OutputFiles out(dir);
+  out.set_main_path(dir / "MAIN.TAP");
+  out.write_line("%");
+  out.execute({Verb::Open, "SUB.SPF"});
+  out.write_line("sub 1");
+  out.execute({Verb::Close, "SUB.SPF"});
+  out.write_line("main 2");
+  out.execute({Verb::Open, "sub.spf"});  // the same file (names compare case-insensitively): appended to
+  out.write_line("sub 2");
+  out.execute({Verb::Close, "SUB.SPF"});
+  out.execute({Verb::Open, "TMP.NC"});
+  out.write_line("fixture");
+  out.execute({Verb::Close, "TMP.NC"});
+  out.execute({Verb::Copy, "TMP.NC"});
+  out.execute({Verb::Copy, "TMP.NC"});
+  out.execute({Verb::Delete, "TMP.NC"});
+  out.execute({Verb::Delete, "NEVER.NC"});  // no error when missing
+  out.write_line("%");
+  EXPECT_EQ(listing().size(), 1u) << "only the private temporary folder before commit";
+  auto written = out.commit();
+  EXPECT_EQ(written.size(), 2u);
+  EXPECT_EQ(slurp(dir / "MAIN.TAP"), "%\nmain 2\nfixture\nfixture\n%\n");
+  EXPECT_EQ(slurp(dir / "SUB.SPF"), "sub 1\nsub 2\n");
+  EXPECT_EQ(listing(), (std::vector<std::string>{"MAIN.TAP", "SUB.SPF"}));
+}
+
+TEST_F(OutputFilesTest, DeleteThenOpenStartsTheFileAgain) {
+  OutputFiles out(dir);
+  out.set_main_path(dir / "MAIN.TAP");
+  for (const char* text : {"first", "second"}) {
+    out.execute({Verb::Delete, "P.SPF"});
+    out.execute({Verb::Open, "P.SPF"});
+    out.write_line(text);
+    out.execute({Verb::Close, "P.SPF"});
+  }
+  out.commit();
+  EXPECT_EQ(slurp(dir / "P.SPF"), "second\n");
+}
+
+TEST_F(OutputFilesTest, AFailedRunLeavesThePreviousFilesUntouched) {
+  std::ofstream(dir / "MAIN.TAP") << "old program\n";
+  {
+    OutputFiles out(dir);
+    out.set_main_path(dir / "MAIN.TAP");
+    out.write_line("new program");
+    out.execute({Verb::Open, "SUB.SPF"});
+    out.write_line("sub");
+  }  // destroyed without commit: an error stopped the run
+  EXPECT_EQ(slurp(dir / "MAIN.TAP"), "old program\n");
+  EXPECT_EQ(listing(), (std::vector<std::string>{"MAIN.TAP"}));
+}
+
+TEST_F(OutputFilesTest, CommitReplacesTheOldFileAndRemovesDeletedOnes) {
+  std::ofstream(dir / "MAIN.TAP") << "old program\n";
+  std::ofstream(dir / "STALE.SPF") << "stale\n";
+  OutputFiles out(dir, OutputFiles::LineEnd::CRLF);
+  out.set_main_path(dir / "MAIN.TAP");
+  out.write_line("new");
+  out.execute({Verb::Delete, "STALE.SPF"});
+  out.commit();
+  EXPECT_EQ(slurp(dir / "MAIN.TAP"), "new\r\n");
+  EXPECT_EQ(listing(), (std::vector<std::string>{"MAIN.TAP"}));
+}
+
+TEST_F(OutputFilesTest, WindowsPathsStayInsideTheOutputFolder) {
+  fs::create_directories(dir / "sub");
+  OutputFiles out(dir);
+  out.set_main_path(dir / "MAIN.TAP");
+  out.execute({Verb::Open, "C:\\NC\\O1.SPF"});
+  out.write_line("o1");
+  out.execute({Verb::Open, "sub\\O2.SPF"});
+  out.write_line("o2");
+  out.execute({Verb::MakeDir, "made"});
+  out.commit();
+  EXPECT_EQ(slurp(dir / "O1.SPF"), "o1\n");
+  EXPECT_EQ(slurp(dir / "sub" / "O2.SPF"), "o2\n");
+  EXPECT_TRUE(fs::is_directory(dir / "made"));
+}
+
+TEST_F(OutputFilesTest, CopyOfAMissingFileIsAnError) {
+  OutputFiles out(dir);
+  try {
+    out.execute({Verb::Copy, "NOPE.NC"});
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot copy `NOPE.NC`: no such file"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(OutputFilesTest, StreamOutputNamesFilesOnlyWhenThereAreSeveral) {
+  {
+    OutputFiles out(dir, OutputFiles::LineEnd::LF, true);
+    out.set_main_path("ONE.TAP");
+    out.write_line("only");
+    std::ostringstream s;
+    out.commit_to(s);
+    EXPECT_EQ(s.str(), "only\n");
+  }
+  OutputFiles out(dir, OutputFiles::LineEnd::LF, true);
+  out.set_main_path("MAIN.TAP");
+  out.write_line("main");
+  out.execute({Verb::Open, "O1.SPF"});
+  out.write_line("sub");
+  std::ostringstream s;
+  out.commit_to(s);
+  EXPECT_EQ(s.str(), "==> MAIN.TAP <==\nmain\n\n==> O1.SPF <==\nsub\n");
+  EXPECT_TRUE(listing().empty()) << "stream output writes nothing in the output folder";
+}
+
+}  // namespace
+
+namespace {
+
+// Lines are buffered and written in large blocks: lines longer than the buffer, many lines across
+// its end, switches between files and copies in between keep their order and bytes (CR LF too).
+TEST_F(OutputFilesTest, BufferedLinesKeepTheirOrderAcrossFilesAndCopies) {
+  OutputFiles out(dir, OutputFiles::LineEnd::CRLF);
+  out.set_main_path(dir / "MAIN.TAP");
+  std::string main_expected, sub_expected;
+  const std::string long_line(200'000, 'x');
+  auto main_line = [&](const std::string& text) {
+    out.write_line(text);
+    main_expected += text + "\r\n";
+  };
+  for (int i = 0; i < 5000; ++i) main_line("N" + std::to_string(i) + " G1 X" + std::to_string(i * 3));
+  main_line(long_line);
+  out.execute({Verb::Open, "SUB.SPF"});
+  for (int i = 0; i < 3000; ++i) {
+    out.write_line("sub " + std::to_string(i));
+    sub_expected += "sub " + std::to_string(i) + "\r\n";
+  }
+  out.execute({Verb::Close, "SUB.SPF"});
+  main_line("after");
+  out.execute({Verb::Copy, "SUB.SPF"});
+  main_expected += sub_expected;
+  main_line(long_line);
+  main_line("");
+  main_line("%");
+  out.commit();
+  EXPECT_EQ(slurp(dir / "MAIN.TAP"), main_expected);
+  EXPECT_EQ(slurp(dir / "SUB.SPF"), sub_expected);
+}
+
+}  // namespace

@@ -1,0 +1,84 @@
+// The command-parameter table and the enumeration constants.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "gppl/system_variables.hpp"
+#include "postproc/engine/enumerations.hpp"
+#include "postproc/engine/parameter_table.hpp"
+#include "toolpath/value.hpp"
+
+namespace {
+
+using postproc::ParameterKind;
+
+TEST(ParameterTable, TypesOfDocumentedParameters) {
+  struct Case {
+    const char* name;
+    ParameterKind kind;
+  } cases[] = {
+      {"xpos", ParameterKind::Numeric},        {"XPOS", ParameterKind::Numeric},
+      {"feed", ParameterKind::Numeric},        {"label", ParameterKind::Integer},
+      {"message", ParameterKind::String},      {"first_drill", ParameterKind::Logical},
+      {"arc_direction", ParameterKind::Enum},  {"side", ParameterKind::Enum},
+      {"drill_type", ParameterKind::Integer},  {"safety", ParameterKind::Numeric},
+      {"xtonext", ParameterKind::Numeric},     {"tmatrix_I_16", ParameterKind::Numeric},
+      {"g_file_name", ParameterKind::String},  {"next_command", ParameterKind::String},
+      {"semi_finish", ParameterKind::Logical}, {"drill_upper_zto", ParameterKind::Numeric},
+  };
+  for (const auto& c : cases) {
+    const auto* p = postproc::find_parameter(c.name);
+    ASSERT_NE(p, nullptr) << c.name;
+    EXPECT_EQ(p->kind, c.kind) << c.name;
+  }
+  EXPECT_EQ(postproc::find_parameter("no_such_parameter"), nullptr);
+  EXPECT_EQ(postproc::find_parameter("start_line"), nullptr) << "a function, not a variable";
+}
+
+// The system-variable table decides a name's type; the catalogue's kinds must agree with it (an
+// enumeration parameter holds an integer code).
+TEST(ParameterTable, AgreesWithTheSystemVariableTable) {
+  for (const auto& p : postproc::parameter_table()) {
+    const gppl::SystemVariable* v = gppl::find_system_variable(p.name);
+    ASSERT_NE(v, nullptr) << p.name;
+    const gppl::Type expected = p.kind == ParameterKind::Integer || p.kind == ParameterKind::Enum ? gppl::Type::Integer
+                                : p.kind == ParameterKind::Numeric                               ? gppl::Type::Numeric
+                                : p.kind == ParameterKind::Logical                               ? gppl::Type::Logical
+                                                                                                  : gppl::Type::String;
+    EXPECT_EQ(v->type, expected) << p.name;
+  }
+}
+
+TEST(ParameterTable, IsSortedAndHasNoDuplicates) {
+  auto table = postproc::parameter_table();
+  EXPECT_GT(table.size(), 400u);
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    EXPECT_EQ(postproc::find_parameter(table[i].name), &table[i]) << table[i].name;
+    if (i > 0) {
+      EXPECT_FALSE(toolpath::iequals(table[i - 1].name, table[i].name)) << table[i].name;
+    }
+  }
+}
+
+TEST(Enumerations, CodesAreStableAndCaseInsensitive) {
+  postproc::Enumerations e({"Drilling", "G84_2", "Peck"});
+  EXPECT_EQ(e.code("CW"), 1);
+  EXPECT_EQ(e.code("ccw"), 2);
+  EXPECT_EQ(e.code("milling"), 0);
+  EXPECT_EQ(e.code("turning"), 1);
+  EXPECT_EQ(e.code("xy"), e.code("XY"));
+  EXPECT_EQ(e.code("COMP_OFF"), 3);
+  EXPECT_EQ(e.code("drilling"), 1);
+  EXPECT_EQ(e.code("g84_2"), 2);
+  EXPECT_EQ(e.code("peck"), 3);
+  EXPECT_EQ(e.code("F_Drill"), 4) << "internal cycle types follow the PRP's own names";
+  auto unknown = e.code("salamat");
+  EXPECT_GE(unknown, 1000);
+  EXPECT_EQ(e.code("SALAMAT"), unknown);
+  EXPECT_NE(e.code("other_word"), unknown);
+  const auto& all = e.constants();
+  EXPECT_TRUE(std::any_of(all.begin(), all.end(), [](const auto& c) { return c.name == "G84_2" && c.code == 2; }));
+  EXPECT_EQ(std::count_if(all.begin(), all.end(), [](const auto& c) { return toolpath::iequals(c.name, "XY"); }), 1);
+}
+
+}  // namespace
