@@ -332,12 +332,13 @@ std::uint32_t Compiler::reference(const SyntaxNode& variable, Context& ctx, bool
   const SourcePos pos = node_pos(id, ctx.file);
   VarRef ref;
   const std::vector<int>* dims = nullptr;
+  std::optional<Program::Undeclared> undeclared;
   const auto& locals = procedure_sources_[ctx.procedure].locals;
   if (auto it = locals.find(lower(name)); it != locals.end()) {
     const LocalVariable& l = program_->procedures[ctx.procedure].locals[it->second];
     ref = VarRef{true, it->second, l.offset, kNone, 0};
     dims = &l.dimensions;
-  } else if (auto g = lookup_global(name)) {
+  } else if (auto g = lookup_global(name); g && program_->globals[*g].group != Group::Implicit) {
     ref = VarRef{false, *g, program_->globals[*g].first_cell, kNone, 0};
   } else if (find_function(name) != nullptr) {
     error(target ? ErrorCode::InvalidAssignment : ErrorCode::NotDefined, pos, name,
@@ -346,15 +347,27 @@ std::uint32_t Compiler::reference(const SyntaxNode& variable, Context& ctx, bool
     error(target ? ErrorCode::InvalidAssignment : ErrorCode::NotDefined, pos, name,
           "start_line and end_line are allowed only as items of a generate statement, as in {' N1=' start_line}");
   } else if (options_.implicit_host_variables) {
-    GlobalVariable v;
-    v.name = std::string(name);
-    v.group = Group::Implicit;
-    v.typed = false;
-    v.initial = Value::of_integer(0);
-    v.declared = pos;
-    const std::uint32_t g = add_global(std::move(v));
-    warn(pos, fmt::format("'{}' is not declared: treated as a host variable", name));
-    ref = VarRef{false, g, program_->globals[g].first_cell, kNone, 0};
+    // Declared nowhere: the host may still supply it. For a job run (undeclared_from_job) every use
+    // is checked when it runs: error 383/404 at this position, as `check` reports it, until the
+    // host has assigned it (the job carries it: a machine's user parameter in the trace).
+    if (!g) {
+      GlobalVariable v;
+      v.name = std::string(name);
+      v.group = Group::Implicit;
+      v.typed = false;
+      v.initial = Value::of_integer(0);
+      v.declared = pos;
+      g = add_global(std::move(v));
+    }
+    if (options_.undeclared_from_job) {
+      ref = VarRef{false, *g, program_->globals[*g].first_cell, kUndeclared, 0};
+      undeclared = Program::Undeclared{pos, std::uint32_t(target ? ErrorCode::DoesNotExist : ErrorCode::NotDefined)};
+    } else {
+      ref = VarRef{false, *g, program_->globals[*g].first_cell, kNone, 0};
+      if (program_->globals[*g].declared.line == pos.line && program_->globals[*g].declared.column == pos.column &&
+          program_->globals[*g].declared.file == pos.file)
+        warn(pos, fmt::format("'{}' is not declared: treated as a host variable", name));
+    }
   } else {
     error(target ? ErrorCode::DoesNotExist : ErrorCode::NotDefined, pos, name);
   }
@@ -362,18 +375,22 @@ std::uint32_t Compiler::reference(const SyntaxNode& variable, Context& ctx, bool
   std::vector<std::uint32_t> indices;
   if (variable.children.size() > 1)
     for (const auto& e : variable.children[1]->children) indices.push_back(expression(*e, ctx));
-  if (dims->empty() && !indices.empty()) error(ErrorCode::OutOfRange, pos, {}, fmt::format("'{}' is not an array", name));
+  if (undeclared) {
+    // its shape is unknown: the use is refused when it runs, whatever its indices
+  } else if (dims->empty() && !indices.empty()) error(ErrorCode::OutOfRange, pos, {}, fmt::format("'{}' is not an array", name));
   else if (!dims->empty() && indices.size() != dims->size())
     error(ErrorCode::OutOfRange, pos, {},
           indices.empty() ? fmt::format("array '{}' is used without indices", name)
                           : fmt::format("array '{}' has {} dimension(s)", name, dims->size()));
-  if (!indices.empty()) {
+  if (!indices.empty() && !undeclared) {
     ref.indices = std::uint32_t(program_->lists.size());
     ref.index_count = std::uint32_t(indices.size());
     program_->lists.insert(program_->lists.end(), indices.begin(), indices.end());
   }
   program_->refs.push_back(ref);
-  return std::uint32_t(program_->refs.size() - 1);
+  const auto index = std::uint32_t(program_->refs.size() - 1);
+  if (undeclared) program_->undeclared.emplace(index, *undeclared);
+  return index;
 }
 
 }  // namespace gppl

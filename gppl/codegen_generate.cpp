@@ -78,7 +78,7 @@ void Compiler::generate_item(const SyntaxNode& n, Context& ctx, bool in_group) {
     item.a = expression(operand, ctx);
     item.ref = program_->nodes[item.a].a;
     const VarRef& r = program_->refs[item.ref];
-    if (r.indices == kNone) {
+    if (r.index_count == 0) {
       // Rule 2 of 6.4: a string variable `name_f` (system, global or local) formats `name`.
       const std::string format_name = std::string(operand.children[0]->string_view()) + "_f";
       const auto& locals = procedure_sources_[ctx.procedure].locals;

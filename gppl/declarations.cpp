@@ -21,6 +21,18 @@ Type type_of(std::string_view word) {
   return Type::String;
 }
 
+// A post's global declaration of a system name is that variable when both hold text, or both
+// hold numbers (integer, numeric and logical convert into one another, spec 4.5).
+bool same_kind(Type a, Type b) { return (a == Type::String) == (b == Type::String); }
+
+bool inferred(TypeBasis b) { return b != TypeBasis::Manual && b != TypeBasis::Catalogue; }
+
+// PI, TRUE and FALSE (the manual's variables with special values) cannot be redeclared at all.
+bool special_value(const GlobalVariable& g) {
+  const SystemVariable* s = g.group == Group::System ? find_system_variable(g.name) : nullptr;
+  return s && s->source == VariableSource::Constant && s->basis == TypeBasis::Manual;
+}
+
 Value zero_of(Type t) {
   switch (t) {
     case Type::Integer: return Value::of_integer(0);
@@ -35,17 +47,19 @@ Value zero_of(Type t) {
 
 void Compiler::declare_builtins() {
   for (const SystemVariable& s : system_variables()) {
+    if (line_function_named(s.name)) continue;  // start_line/end_line: generate items, not variables
     GlobalVariable v;
     v.name = std::string(s.name);
     v.type = s.type;
     v.group = Group::System;
     v.read_only = s.read_only;
-    switch (s.type) {
-      case Type::Integer: v.initial = Value::of_integer(std::int64_t(s.number)); break;
-      case Type::Numeric: v.initial = Value::of_numeric(s.number); break;
-      case Type::Logical: v.initial = Value::of_logical(s.number != 0); break;
-      case Type::String: v.initial = Value::of_string(std::string(s.text)); break;
-    }
+    if (s.rows > 0) v.dimensions.push_back(s.rows);
+    if (s.columns > 0) v.dimensions.push_back(s.columns);
+    for (int d : v.dimensions) v.cell_count *= std::uint32_t(d);
+    v.initial = default_value(s);
+    // An inferred type of a value the job supplies is only the default's: the job's first value
+    // types the variable (a trace that sends text where we guessed a number is still right).
+    v.typed = s.rows > 0 || !(inferred(s.basis) && (s.source == VariableSource::Trace || s.source == VariableSource::Machine));
     add_global(std::move(v));
   }
   for (const HostVariable& h : options_.host_variables) {
@@ -100,10 +114,12 @@ void Compiler::declare_parameters(const ParsedLine& header, std::uint32_t proced
       error(ErrorCode::InvalidLocal, pos, {}, fmt::format("'{}' is the name of a built-in function", name.string_view()));
       continue;
     }
-    if (globals_.count(key) != 0) {
+    if (globals_.count(key) != 0) {  // a system name as a parameter is a local copy, as with `local`
       const GlobalVariable& g = program_->globals[globals_.at(key)];
-      error(g.group == Group::Global ? ErrorCode::AlreadyGlobal : ErrorCode::SystemDeclared, pos, g.name);
-      continue;
+      if (g.group == Group::Global || special_value(g)) {
+        error(g.group == Group::Global ? ErrorCode::AlreadyGlobal : ErrorCode::SystemDeclared, pos, g.name);
+        continue;
+      }
     }
     declare_local(procedure, name.string_view(), type_of(parameter->children[0]->string_view()), {}, pos,
                   ErrorCode::LocalRedefined);
@@ -154,7 +170,18 @@ void Compiler::declare(const ParsedLine& line, std::uint32_t procedure) {
     }
     const auto existing = globals_.find(key);
     if (existing != globals_.end() && program_->globals[existing->second].group != Group::Global) {
-      error(ErrorCode::SystemDeclared, pos, program_->globals[existing->second].name);
+      // A name the system (or the host) defines: SolidCAM accepts a local copy of it and a global
+      // declaration that matches it; only a global of another kind of value is refused.
+      const GlobalVariable& g = program_->globals[existing->second];
+      if (special_value(g)) {
+        error(ErrorCode::SystemDeclared, pos, g.name);
+      } else if (!global) {
+        declare_local(procedure, name, type, std::move(dims), pos, ErrorCode::LocalRedefined);
+      } else if (!same_kind(g.type, type) || g.dimensions.size() != dims.size()) {
+        error(ErrorCode::SystemDeclared, pos, g.name,
+              fmt::format("it is {}{}, declared here as {}{}", name_of(g.type), g.dimensions.empty() ? "" : " array",
+                          name_of(type), dims.empty() ? "" : " array"));
+      }
       continue;
     }
     if (global) {

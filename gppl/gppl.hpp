@@ -78,6 +78,10 @@ struct CompileOptions {
   // declared nowhere becomes a host variable whose type is fixed by its first assignment from the
   // host (a warning, not error 383). `postproc check` compiles with this false.
   bool implicit_host_variables = true;
+  // With implicit_host_variables, for a host that runs a job (postproc run): such a name has a
+  // value only once the host assigns it (the job carries it). Any use before that, by the post,
+  // is error 383 (read) or 404 (assignment) at the name: the diagnostic `check` gives. No warning.
+  bool undeclared_from_job = false;
   // Where `include`/`inc` files are looked up besides the including file's folder.
   std::vector<std::string> include_paths;
 };

@@ -74,6 +74,12 @@ const std::string& Interpreter::State::variable_name(const VarRef& ref) const {
 }
 
 Cell& Interpreter::State::array_element(const VarRef& ref) {
+  if (ref.indices == kUndeclared) {
+    Cell& c = cell(ref);
+    if (c.typed) return c;  // the host has given it a value (the job carries it)
+    const auto& u = program.undeclared.at(std::uint32_t(&ref - program.refs.data()));
+    fail_at(u.pos, ErrorCode(u.error), variable_name(ref));
+  }
   const std::vector<int>& dims = ref.local ? program.procedures[frames.back().procedure].locals[ref.id].dimensions
                                            : program.globals[ref.id].dimensions;
   std::uint32_t offset = 0;

@@ -14,6 +14,9 @@
 namespace gppl {
 
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+// VarRef::indices of a name the post uses but nothing declares (a run's implicit host variable):
+// every use goes through the out-of-line element path, which refuses it until the host gives it a value.
+constexpr std::uint32_t kUndeclared = 0xFFFFFFFEu;
 
 // A compact source position; the file is an index into Program::files.
 struct SourcePos {
@@ -160,6 +163,13 @@ public:
   SystemSlots slots{};
   bool uses_line_functions = false;  // start_line/end_line appear: the sink's structure hooks are called
   std::vector<std::string> warnings;
+  // Per ref with indices == kUndeclared: where the name stands and the error a use of it is
+  // before the host has assigned it (383 read, 404 assigned), the diagnostic `check` gives.
+  struct Undeclared {
+    SourcePos pos;
+    std::uint32_t error = 0;
+  };
+  std::unordered_map<std::uint32_t, Undeclared> undeclared;
 
   std::unordered_map<std::string, std::uint32_t> global_index;     // lower-case name -> globals
   std::unordered_map<std::string, std::uint32_t> procedure_index;  // lower-case "@name" -> procedures

@@ -1,72 +1,104 @@
-// Defaults follow spec 12.2's recommendation: the manual's example values, skipline TRUE,
-// gcode_space FALSE, and '' (format not set: fall through to the defaults) for coordinate-set formats.
+// The table lives in system_variables.inc (one SYSVAR row per name). Defaults of the variables a
+// post sets follow the manual's example values (spec 12.2): skipline TRUE, gcode_space FALSE, and
+// '' (format not set: fall through to the defaults) for coordinate-set formats.
 #include "gppl/system_variables.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <string>
+#include <unordered_map>
 
 namespace gppl {
 
 namespace {
 
+constexpr bool Assign = false;
+constexpr bool ReadOnly = true;
+using enum Type;
+using enum VariableSource;
+using enum TypeBasis;
+
 constexpr SystemVariable kSystem[] = {
-    // passed from SolidCAM (12.1)
-    {"gcode", Type::Integer, false, "", 0},
-    {"mcode", Type::Integer, false, "", 0},
-    {"rotated", Type::Logical, false, "", 0},
-    {"mirrored", Type::Logical, false, "", 0},
-    {"prev_command", Type::String, false, "", 0},
-    {"current_command", Type::String, false, "", 0},
-    {"next_command", Type::String, false, "", 0},
-    {"first_user_proc", Type::Integer, false, "", 0},
-    // output format and numbering (12.2)
-    {"remove_blanks", Type::Logical, false, "", 0},
-    {"gcode_space", Type::Logical, false, "", 0},
-    {"gcode_f", Type::String, false, "2.0(p)", 0},
-    {"mcode_f", Type::String, false, "2.0(p)", 0},
-    {"numeric_def_f", Type::String, false, "5.3", 0},
-    {"integer_def_f", Type::String, false, "5.0(p)", 0},
-    {"xpos_f", Type::String, false, "5.3(p)", 0},
-    {"ypos_f", Type::String, false, "5.3(p)", 0},
-    {"zpos_f", Type::String, false, "5.3(p)", 0},
-    {"apos_f", Type::String, false, "5.3(p)", 0},
-    {"feed_f", Type::String, false, "4.0(p)", 0},
-    {"xlpos_f", Type::String, false, "", 0},
-    {"ylpos_f", Type::String, false, "", 0},
-    {"zlpos_f", Type::String, false, "", 0},
-    {"xhpos_f", Type::String, false, "", 0},
-    {"yhpos_f", Type::String, false, "", 0},
-    {"zhpos_f", Type::String, false, "", 0},
-    {"xmpos_f", Type::String, false, "", 0},
-    {"ympos_f", Type::String, false, "", 0},
-    {"zmpos_f", Type::String, false, "", 0},
-    {"xtpos_f", Type::String, false, "", 0},
-    {"ytpos_f", Type::String, false, "", 0},
-    {"ztpos_f", Type::String, false, "", 0},
-    {"xopos_f", Type::String, false, "", 0},
-    {"yopos_f", Type::String, false, "", 0},
-    {"zopos_f", Type::String, false, "", 0},
-    {"xtopos_f", Type::String, false, "", 0},
-    {"ytopos_f", Type::String, false, "", 0},
-    {"ztopos_f", Type::String, false, "", 0},
-    {"end_block_text", Type::String, false, "", 0},
-    {"blknum_letter", Type::String, false, "N", 0},
-    {"blknum_exist", Type::Logical, false, "", 1},
-    {"blknum_gen", Type::Logical, false, "", 0},
-    {"blknum_f", Type::String, false, "5.0(p)", 0},
-    {"blknum", Type::Integer, false, "", 5},
-    {"blknum_delta", Type::Integer, false, "", 5},
-    {"blknum_max", Type::Integer, false, "", 32000},
-    {"skipline", Type::Logical, false, "", 1},
-    {"num_user_procs", Type::Integer, false, "", 1},
-    {"print_file_size", Type::Integer, false, "", 0},  // 1: the engine replaces `$$file_size$$`
-    {"clear_change_after_gen", Type::Logical, false, "", 0},
-    // special and read-only (12.3)
-    {"PI", Type::Numeric, true, "", 3.14159265358979323846},
-    {"TRUE", Type::Logical, true, "", 1},
-    {"FALSE", Type::Logical, true, "", 0},
-    {"inch_system", Type::Logical, true, "", 0},
+#define SYSVAR(name, type, access, source, rows, columns, dflt, basis, meaning) \
+  {name, type, access, source, rows, columns, dflt, basis, meaning},
+#define JOBTYPE(value)
+#include "gppl/system_variables.inc"
+#undef JOBTYPE
+#undef SYSVAR
 };
+
+constexpr std::string_view kJobTypes[] = {
+#define SYSVAR(name, type, access, source, rows, columns, dflt, basis, meaning)
+#define JOBTYPE(value) value,
+#include "gppl/system_variables.inc"
+#undef JOBTYPE
+#undef SYSVAR
+};
+
+std::string folded(std::string_view s) {
+  std::string out(s);
+  for (char& c : out)
+    if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+  return out;
+}
 
 }  // namespace
 
 std::span<const SystemVariable> system_variables() { return kSystem; }
+std::span<const std::string_view> job_type_values() { return kJobTypes; }
+
+const SystemVariable* find_system_variable(std::string_view name) {
+  static const auto index = [] {
+    std::unordered_map<std::string, const SystemVariable*> m;
+    for (const SystemVariable& v : kSystem) m.emplace(folded(v.name), &v);
+    return m;
+  }();
+  const auto it = index.find(folded(name));
+  return it == index.end() ? nullptr : it->second;
+}
+
+Value default_value(const SystemVariable& v) {
+  if (v.type == Type::String) return Value::of_string(std::string(v.default_text));
+  double number = 0;
+  if (!v.default_text.empty()) number = std::stod(std::string(v.default_text));
+  switch (v.type) {
+    case Type::Integer: return Value::of_integer(std::int64_t(number));
+    case Type::Logical: return Value::of_logical(number != 0);
+    default: return Value::of_numeric(number);
+  }
+}
+
+std::string_view name_of(VariableSource source) {
+  switch (source) {
+    case VariableSource::Trace: return "trace";
+    case VariableSource::Machine: return "machine";
+    case VariableSource::Post: return "post";
+    case VariableSource::Run: return "run";
+    case VariableSource::Constant: return "constant";
+  }
+  return "";
+}
+
+std::string_view name_of(TypeBasis basis) {
+  switch (basis) {
+    case TypeBasis::Manual: return "manual";
+    case TypeBasis::Catalogue: return "catalogue";
+    case TypeBasis::Usage: return "usage";
+    case TypeBasis::Observed: return "observed";
+    case TypeBasis::Naming: return "naming";
+    case TypeBasis::Guess: return "guess";
+  }
+  return "";
+}
+
+std::string_view name_of(Type type) {
+  switch (type) {
+    case Type::Integer: return "integer";
+    case Type::Numeric: return "numeric";
+    case Type::Logical: return "logical";
+    case Type::String: return "string";
+  }
+  return "";
+}
 
 }  // namespace gppl

@@ -190,8 +190,8 @@ void TraceReader::parse_body_line(Command& out, bool first_after_header, std::si
     out.trace.push_back({TraceLine::Kind::Directive, std::string(trim_right(rest))});
     return;
   }
-  // Block form: `name : value`.
-  std::size_t n = ident_length(rest);
+  // Block form: `name : value` (`name<<i>> : value` for an array element).
+  std::size_t n = parameter_name_length(rest);
   if (n > 0) {
     std::size_t colon = skip_blanks(s, i + n);
     if (colon < s.size() && s[colon] == ':') {

@@ -70,10 +70,31 @@ inline std::size_t ident_length(std::string_view s) {
   return static_cast<std::size_t>(p - s.data());
 }
 
-// The length of the name when `s` starts with `identifier:` (how a name:value pair opens in the
-// inline layout), else 0.
+// The length of an array index at the start of `s`, `<<2>>` or `<<3,2>>`, else 0: a parameter may
+// be one element of a host array (`call_prms<<2>> : 5.`, `chng_cond<<3,1>> : '0.25'`).
+inline std::size_t index_suffix_length(std::string_view s) {
+  if (s.size() < 5 || s[0] != '<' || s[1] != '<') return 0;
+  std::size_t i = 2;
+  for (int part = 0; part < 2; ++part) {
+    const std::size_t digits = i;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
+    if (i == digits) return 0;
+    if (i >= s.size() || s[i] != ',') break;
+    ++i;
+  }
+  return i + 1 < s.size() && s[i] == '>' && s[i + 1] == '>' ? i + 2 : 0;
+}
+
+// A parameter name: an identifier, with an array index when it names an element.
+inline std::size_t parameter_name_length(std::string_view s) {
+  const std::size_t n = ident_length(s);
+  return n == 0 ? 0 : n + index_suffix_length(s.substr(n));
+}
+
+// The length of the name when `s` starts with `name:` (how a name:value pair opens in the inline
+// layout), else 0.
 inline std::size_t pair_name_length(std::string_view s) {
-  std::size_t n = ident_length(s);
+  std::size_t n = parameter_name_length(s);
   return n > 0 && n < s.size() && s[n] == ':' ? n : 0;
 }
 

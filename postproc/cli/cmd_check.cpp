@@ -8,6 +8,7 @@
 
 #include "gppl/gppl.hpp"
 #include "postproc/cli/cli.hpp"
+#include "postproc/cli/cli_support.hpp"
 #include "postproc/engine/enumerations.hpp"
 #include "postproc/engine/host_variables.hpp"
 #include "prp/prp.hpp"
@@ -41,6 +42,10 @@ std::size_t check_gpp(const std::string& path, const prp::MachineParameters& mac
   Enumerations enums(cycles);
   gppl::CompileOptions options;
   options.host_variables = host_variables(enums, machine);
+  if (args.has("--job")) {  // the names the job carries are defined, as in a run of that job
+    Input job = Input::open(args.value("--job"));
+    for (auto& v : job_variables(*job.reader)) options.host_variables.push_back(std::move(v));
+  }
   options.implicit_host_variables = false;  // every name must be declared: typos are errors here
   if (args.has("--include")) options.include_paths.push_back(args.value("--include"));
   try {
@@ -88,10 +93,11 @@ int run_check(const Arguments& args, std::ostream& out, std::ostream&) {
 Subcommand check_command() {
   return {
       "check",
-      "postproc check [--prp P.prp] FILE.gpp|FILE.prp|FILE.mac|FILE.vmid...",
+      "postproc check [--prp P.prp] [--job JOB] FILE.gpp|FILE.prp|FILE.mac|FILE.vmid...",
       "Check posts and PRP files without running them; print every error with its position.",
       {
           {"--prp", "", true, "the machine file (PRP or VMID) whose external variables the posts may use (default: the first one given)"},
+          {"--job", "", true, "a job (.trace) whose parameter names the posts may use, as a run of it would allow"},
           {"--include", "-I", true, "a folder where `inc` files are looked up"},
           {"--units", "", true, "metric (default) or inch"},
           {"--quiet", "-q", false, "print only the errors"},

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "gppl/gppl.hpp"
+#include "gppl/system_variables.hpp"
 #include "postproc/engine/directive.hpp"
 #include "postproc/engine/engine_sink.hpp"
 #include "postproc/engine/enumerations.hpp"
@@ -85,6 +86,11 @@ public:
     interpreter_.set_limits(engine.options().max_loop_iterations, engine.options().max_call_depth);
     for (const auto& c : enums_.constants())
       if (auto id = interpreter_.find_variable(c.name)) interpreter_.assign(*id, gppl::Value::of_integer(c.code));
+    // Integer constants of the system table are words a trace sends (tool types: `tool_type:face_mill`):
+    // each holds the code that word gets, so `tool_type eq face_mill` compares codes.
+    for (const auto& v : gppl::system_variables())
+      if (v.source == gppl::VariableSource::Constant && v.type == gppl::Type::Integer)
+        if (auto id = interpreter_.find_variable(v.name)) interpreter_.assign(*id, gppl::Value::of_integer(enums_.code(v.name)));
     prev_command_ = interpreter_.find_variable("prev_command");
     current_command_ = interpreter_.find_variable("current_command");
     next_command_ = interpreter_.find_variable("next_command");
@@ -92,6 +98,7 @@ public:
       command_names_ = std::array<gppl::VariableId, 3>{*prev_command_, *current_command_, *next_command_};
     for (const auto* cycle : engine.machine().records("drill_type"))
       for (const auto& p : cycle->params) drill_parameters_.push_back(p);
+    fill_run_values();
     // PRP external variables start with their declared value, or inactive until a command sets them.
     // Cycle parameters are inactive whatever their value (a VMID gives them the dialog's default).
     for (const auto& v : engine.machine().external_variables()) {
@@ -261,11 +268,26 @@ private:
     if (reset && command_info.calls_subroutine) interpreter_.reset_change_memory();
   }
 
+  // System variables the run knows before the job says anything (docs/system-variables.md, source
+  // "run"); a command of the job that carries one assigns it again, so the trace wins.
+  void fill_run_values() {
+    const std::filesystem::path job(options_.input_name);
+    set_string(interpreter_.find_variable("part_name"), input_stem());
+    set_string(interpreter_.find_variable("part_full_name"), (job.parent_path() / job.stem()).string());
+    set_string(interpreter_.find_variable("path_part"), job.parent_path().string());
+    set_string(interpreter_.find_variable("pre_processor"), std::filesystem::path(engine_.options().post).stem().string());
+  }
+
   // Names the main file, and completes the subroutine numbers the stream left out.
   void start_of_file(toolpath::Command& command) {
     const toolpath::Value* name = command.find("g_file_name");
     std::string base = name && !name->text.empty() ? name->text : input_stem();
     name_main_file(default_main_name(base, engine_.file_extension()));
+    // The trace's own full_g_file_name, when it has one, is assigned after this and wins.
+    if (!options_.main_path) return;
+    std::error_code ignored;
+    const auto full = std::filesystem::absolute(files_.main_path(), ignored);
+    set_string(interpreter_.find_variable("full_g_file_name"), full.string());
     if (!command.find("first_user_proc") && options_.reopen) derive_procedure_numbers(command);
   }
 
@@ -322,6 +344,7 @@ Engine::Engine(EngineOptions options) : options_(std::move(options)) {
   gppl::CompileOptions compile;
   compile.host_variables = host_variables(enums, machine());
   compile.include_paths = options_.include_paths;
+  compile.undeclared_from_job = true;  // a name nothing declares is the job's, or an error where used
   program_ = gppl::compile_file(options_.post, compile);
   for (const std::string& warning : gppl::check_answers(*program_, options_.answers))
     if (options_.log) *options_.log << warning << '\n';

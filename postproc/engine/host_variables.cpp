@@ -35,7 +35,29 @@ std::string lower(std::string s) {
   return s;
 }
 
+gppl::Type gppl_type(toolpath::ValueKind kind) {
+  switch (kind) {
+    case toolpath::ValueKind::Integer: return gppl::Type::Integer;
+    case toolpath::ValueKind::Numeric: return gppl::Type::Numeric;
+    case toolpath::ValueKind::Logical: return gppl::Type::Logical;
+    case toolpath::ValueKind::String: return gppl::Type::String;
+    case toolpath::ValueKind::Enum: return gppl::Type::Integer;
+  }
+  return gppl::Type::Numeric;
+}
+
 }  // namespace
+
+std::vector<gppl::HostVariable> job_variables(toolpath::CommandSource& job) {
+  std::vector<gppl::HostVariable> out;
+  std::set<std::string> seen;
+  toolpath::Command command;
+  while (job.next(command))
+    for (const auto& p : command.parameters)
+      if (p.name.find('<') == std::string::npos && seen.insert(lower(p.name)).second)  // not array elements
+        out.push_back({p.name, gppl_type(p.value.kind), false, {}});
+  return out;
+}
 
 std::vector<gppl::HostVariable> host_variables(const Enumerations& enums, const prp::MachineParameters& machine) {
   std::vector<gppl::HostVariable> out;

@@ -1,5 +1,8 @@
 #include "postproc/engine/parameter_binding.hpp"
 
+#include <span>
+#include <stdexcept>
+
 #include "postproc/engine/parameter_table.hpp"
 #include "toolpath/short_text.hpp"
 
@@ -23,8 +26,33 @@ const ParameterBinding::Slot& ParameterBinding::slot(std::string_view name) {
 // Every spelling of a catalogue name has its key, and names the same variable (names are looked up
 // without case): the first spelling seen binds the key.
 void ParameterBinding::resolve(Bound& b, std::string_view name) {
-  b.slot = slot(name);
   b.resolved = true;
+  b.array.reset();
+  const std::size_t open = name.find("<<");
+  if (open == std::string_view::npos) {
+    b.slot = slot(name);
+    return;
+  }
+  // `name<<i>>` / `name<<i,j>>` (the reader checked the syntax): an element of a host array.
+  b.slot = {};
+  b.array = interpreter_.find_variable(name.substr(0, open));
+  b.index_count = 0;
+  for (std::size_t i = open + 2; i < name.size() && b.index_count < 2; ++i) {
+    int v = 0;
+    while (i < name.size() && name[i] >= '0' && name[i] <= '9') v = v * 10 + (name[i++] - '0');
+    b.index[b.index_count++] = v;
+    if (i >= name.size() || name[i] != ',') break;
+  }
+}
+
+void ParameterBinding::assign_element(const Bound& b, const toolpath::Value& v) {
+  const bool text = interpreter_.value(*b.array).type == gppl::Type::String;
+  try {
+    interpreter_.assign_element(*b.array, std::span<const int>(b.index.data(), b.index_count), convert(v, text),
+                                change_override(v.flag));
+  } catch (const std::out_of_range& e) {
+    throw std::runtime_error(e.what());  // an index outside the array: an error of the job
+  }
 }
 
 ParameterBinding::Bound& ParameterBinding::at_position(Positions& positions, std::size_t position,
@@ -34,7 +62,8 @@ ParameterBinding::Bound& ParameterBinding::at_position(Positions& positions, std
     return positions[position];
   if (position >= positions.size()) positions.resize(position + 1);
   Bound& b = positions[position];
-  b = Bound{std::string(name), {}, false, {}, 0};
+  b = Bound{};
+  b.name = std::string(name);
   resolve(b, name);
   return b;
 }

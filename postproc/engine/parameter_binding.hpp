@@ -8,6 +8,7 @@
 // parameters in the same order, so one comparison usually replaces a name lookup).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -33,6 +34,10 @@ public:
     std::string name;  // positional bindings only: the name seen at that position
     Slot slot;
     bool resolved = false;
+    // An array element (`call_prms<<2>>`): slot.id stays empty, so the common path skips it.
+    std::optional<gppl::VariableId> array;
+    std::array<int, 2> index{};
+    std::uint8_t index_count = 0;
     std::string enum_word;
     std::int64_t enum_code = 0;
   };
@@ -48,6 +53,7 @@ public:
       const toolpath::Parameter& p = command.parameters[i];
       Bound& b = p.key != toolpath::ParamKey::none ? keyed(p) : at_position(positions, i, p.name);
       if (b.slot.id) assign(b, p.value);
+      else if (b.array) assign_element(b, p.value);
     }
   }
 
@@ -88,6 +94,7 @@ private:
     }
   }
   void assign_enum(Bound& b, const toolpath::Value& v, gppl::ChangeOverride change);
+  void assign_element(const Bound& b, const toolpath::Value& v);
 
   struct TransparentHash {
     using is_transparent = void;

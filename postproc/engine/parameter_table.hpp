@@ -1,6 +1,7 @@
-// The parameters of every toolpath command (gpptool-commands.md, sections 3 and 5-14), with their GPPL
-// types: the host variables the engine declares before compiling a post. A parameter that is not in
-// the table still reaches the post; its type is then fixed by its first value (an implicit host variable).
+// The parameters of every toolpath command (gpptool-commands.md, sections 3 and 5-14): which commands
+// carry them, and their kinds. Every one is a system variable (gppl/system_variables.inc decides its
+// type; tests/postproc/tables_test.cpp holds the kinds here to it). A parameter that is not in the
+// table still reaches the post when the post uses its name (docs/gppl-language.md, "Names").
 #pragma once
 
 #include <cstdint>

@@ -98,7 +98,7 @@ INSTANTIATE_TEST_SUITE_P(
                    "5:15: error 416"},
         BrokenPost{"416 parameter already global", "@a\nglobal integer v\nendp\n@b(integer v)\nendp\n",
                    "4:12: error 416"},
-        BrokenPost{"418 system variable declared", "@t\nglobal integer gcode\nendp\n", "2:16: error 418"},
+        BrokenPost{"418 system variable declared as text", "@t\nglobal string gcode\nendp\n", "2:15: error 418"},
         BrokenPost{"418 read-only system variable declared", "@t\nlocal numeric pi\nendp\n", "2:15: error 418"}));
 
 TEST(LoadErrors, UndefinedNamesWhenHostListsAll) {

@@ -65,7 +65,7 @@ TEST(ExtraFunctions, Errors) {
 // The array functions read the shape of the variable they name (locals, globals, host arrays).
 TEST(ArrayFunctions, InAPost) {
   gppl::CompileOptions options;
-  options.host_variables.push_back({"chng_cond", gppl::Type::Numeric, false, {3, 40}});
+  options.host_variables.push_back({"wire_table", gppl::Type::Numeric, false, {3, 40}});
   gppl_test::Post post(R"(@t
 global integer homes<<54>>
 local string grid<<2,3,4>>
@@ -73,7 +73,7 @@ local integer n
 n = 2
 {nb adims(homes) ' ' asize(homes) ' ' alen(homes, 1)}
 {nb ADIMS(grid) ' ' Asize(grid) ' ' alen(grid, n) ' ' alen(grid, n + 1)}
-{nb adims(chng_cond) ' ' asize(chng_cond) ' ' alen(chng_cond, 2)}
+{nb adims(wire_table) ' ' asize(wire_table) ' ' alen(wire_table, 2)}
 {nb adims(n) ' ' asize(n)}
 endp
 )",

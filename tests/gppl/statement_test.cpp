@@ -218,10 +218,10 @@ TEST(Statements, InitIncRunsAfterInitPost) {
 
 TEST(Statements, HostArrays) {
   gppl::CompileOptions options;
-  options.host_variables.push_back({"chng_cond", gppl::Type::Numeric, false, {3, 4}});
-  Post post("@t\nif change(chng_cond<<3,2>>) then\n{nb, chng_cond<<3,2>>}\nendif\nendp\n", options);
+  options.host_variables.push_back({"wire_table", gppl::Type::Numeric, false, {3, 4}});
+  Post post("@t\nif change(wire_table<<3,2>>) then\n{nb, wire_table<<3,2>>}\nendif\nendp\n", options);
   const int index[] = {3, 2};
-  post.run->assign_element(post.id("chng_cond"), index, numeric(2.5));
+  post.run->assign_element(post.id("wire_table"), index, numeric(2.5));
   post.call("@t");
   EXPECT_EQ(post.text(), "2.5");
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "gppl/system_variables.hpp"
 #include "postproc/engine/enumerations.hpp"
 #include "postproc/engine/parameter_table.hpp"
 #include "toolpath/value.hpp"
@@ -32,6 +33,20 @@ TEST(ParameterTable, TypesOfDocumentedParameters) {
   }
   EXPECT_EQ(postproc::find_parameter("no_such_parameter"), nullptr);
   EXPECT_EQ(postproc::find_parameter("start_line"), nullptr) << "a function, not a variable";
+}
+
+// The system-variable table decides a name's type; the catalogue's kinds must agree with it (an
+// enumeration parameter holds an integer code).
+TEST(ParameterTable, AgreesWithTheSystemVariableTable) {
+  for (const auto& p : postproc::parameter_table()) {
+    const gppl::SystemVariable* v = gppl::find_system_variable(p.name);
+    ASSERT_NE(v, nullptr) << p.name;
+    const gppl::Type expected = p.kind == ParameterKind::Integer || p.kind == ParameterKind::Enum ? gppl::Type::Integer
+                                : p.kind == ParameterKind::Numeric                               ? gppl::Type::Numeric
+                                : p.kind == ParameterKind::Logical                               ? gppl::Type::Logical
+                                                                                                  : gppl::Type::String;
+    EXPECT_EQ(v->type, expected) << p.name;
+  }
 }
 
 TEST(ParameterTable, IsSortedAndHasNoDuplicates) {
