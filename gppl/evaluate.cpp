@@ -86,18 +86,18 @@ void Interpreter::State::eval(std::uint32_t index, Value& out) {
         case Type::String: fail_at(n.pos, ErrorCode::NotNumeric, {}, "unary minus needs a number, not a string");
       }
       return;
-    case NodeKind::Not: eval(n.a, out); set_logical(out, !to_logical(out)); return;
+    case NodeKind::Not: eval(n.a, out); set_logical(out, !truth(out)); return;
     case NodeKind::And:
     case NodeKind::Or: {
       // Short-circuit: the right side is evaluated only when it decides the result (4.2 allows either).
       eval(n.a, out);
-      const bool left = to_logical(out);
+      const bool left = truth(out);
       if (left == (n.kind == NodeKind::Or)) {
         set_logical(out, left);
         return;
       }
       eval(n.b, out);
-      set_logical(out, to_logical(out));
+      set_logical(out, truth(out));
       return;
     }
     case NodeKind::Binary: {
@@ -129,7 +129,7 @@ bool Interpreter::State::condition(std::uint32_t node) {
     case NodeKind::Variable:
       if (n.simple) {
         const Value& v = cell(program.refs[n.a]).value;
-        return v.type == Type::Logical ? v.logical : to_logical(v);
+        return v.type == Type::Logical ? v.logical : truth(v);
       }
       break;
     case NodeKind::Attribute:
@@ -142,7 +142,7 @@ bool Interpreter::State::condition(std::uint32_t node) {
   }
   Value& v = push_scratch();
   eval(node, v);
-  const bool result = to_logical(v);
+  const bool result = truth(v);
   pop_scratch();
   return result;
 }

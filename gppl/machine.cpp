@@ -143,6 +143,19 @@ bool Interpreter::State::to_logical(const Value& v) const {
   fail(ErrorCode::NotNumeric, {}, fmt::format("a logical value is required, not the string '{}'", v.text));
 }
 
+// Real posts test integer options directly (`if iSplit_ProgName_Num and bUseprognum` with the
+// option at 2) and SolidCAM runs them: in a condition and under and/or/not a number is TRUE when
+// it is not zero. Storing a number other than 0/1 in a logical variable is still error 420.
+bool Interpreter::State::truth(const Value& v) const {
+  switch (v.type) {
+    case Type::Logical: return v.logical;
+    case Type::Integer: return v.integer != 0;
+    case Type::Numeric: return v.numeric != 0.0;
+    case Type::String: break;
+  }
+  fail(ErrorCode::NotNumeric, {}, fmt::format("a logical value is required, not the string '{}'", v.text));
+}
+
 void Interpreter::State::reset_cell(Cell& c, Type type) const {
   set_zero(c.value, type);
   c.changed = false;

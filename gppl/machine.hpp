@@ -180,7 +180,8 @@ struct Interpreter::State {
   }
   std::int64_t to_integer(const Value& v, const VarRef* ref = nullptr) const;
   double to_numeric(const Value& v, const VarRef* ref = nullptr) const;
-  bool to_logical(const Value& v) const;
+  bool to_logical(const Value& v) const;  // into a logical variable: 0 or 1, else error 420
+  bool truth(const Value& v) const;       // a condition or an and/or/not operand: non-zero is TRUE
   void reset_cell(Cell& c, Type type) const;
   Value& push_scratch() {  // inline: several calls per generated item
     if (scratch_top == scratch.size()) grow_scratch();

@@ -167,7 +167,7 @@ INSTANTIATE_TEST_SUITE_P(
                     RunCase{"409 bad scale", "@t\n{nb, 1.:'5.3(*)'}\nendp\n", "2:6: error 409"},
                     RunCase{"410 number too large to print", "@t\n{nb, 1.E101}\nendp\n", "2:6: error 410"},
                     RunCase{"410 integer overflow", "@t\nx = 999999999 * 2\nendp\n", "2:15: error 410"},
-                    RunCase{"420 condition not logical", "@t\nif 2\nendif\nendp\n", "2:1: error 420"},
+                    RunCase{"420 logical variable", "@t\nglobal logical l\nl = 2\nendp\n", "3:1: error 420"},
                     RunCase{"420 attribute value", "@t\nchange(x) = 3\nendp\n", "2:1: error 420"},
                     RunCase{"421 format without point", "@t\n{nb, 1.:'5'}\nendp\n", "2:6: error 421"},
                     RunCase{"422 format without fraction", "@t\n{nb, 1.:'5.'}\nendp\n", "2:6: error 422"},

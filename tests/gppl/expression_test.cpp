@@ -58,6 +58,9 @@ INSTANTIATE_TEST_SUITE_P(
                     ExpressionCase{"1 = 1 and 2 = 2 or FALSE", "", logical(true)},
                     ExpressionCase{"FALSE or TRUE and FALSE", "", logical(false)},
                     ExpressionCase{"not TRUE or TRUE", "", logical(true)},
+                    // Under and/or/not a number is TRUE when not zero, as real posts rely on.
+                    ExpressionCase{"2 and TRUE", "", logical(true)}, ExpressionCase{"not 0.5", "", logical(false)},
+                    ExpressionCase{"0 or -3", "", logical(true)}, ExpressionCase{"not 0", "", logical(true)},
                     ExpressionCase{"not (TRUE or TRUE)", "", logical(false)},
                     ExpressionCase{"- - 3", "", integer(3)}, ExpressionCase{"+3 - -2", "", integer(5)},
                     ExpressionCase{"-TRUE", "", integer(-1)}, ExpressionCase{"2 * 3 ^ 2", "", numeric(18.)},
@@ -93,15 +96,20 @@ TEST_P(ExpressionErrors, Raise) {
 INSTANTIATE_TEST_SUITE_P(
     Spec, ExpressionErrors,
     testing::Values(ErrorCase{"'abc'+1", "", 394}, ErrorCase{"1+'abc'", "", 394}, ErrorCase{"'a' - 'b'", "", 386},
-                    ErrorCase{"1/0", "", 407}, ErrorCase{"1./0", "", 407}, ErrorCase{"2 and TRUE", "", 420},
-                    ErrorCase{"not 0.5", "", 420}, ErrorCase{"(-2) ^ 0.5", "", 387}, ErrorCase{"0 ^ 0", "", 387},
+                    ErrorCase{"1/0", "", 407}, ErrorCase{"1./0", "", 407}, ErrorCase{"(-2) ^ 0.5", "", 387}, ErrorCase{"0 ^ 0", "", 387},
                     ErrorCase{"999999999 + 1", "", 410}, ErrorCase{"a<<3>>", "global integer a<<2>>", 387},
                     ErrorCase{"a<<0>>", "global integer a<<2>>", 387},
                     ErrorCase{"a<<1.5>>", "global integer a<<2>>", 387}, ErrorCase{"-'x'", "", 386}));
 
-TEST(Expressions, ConditionMustBeLogical) {
-  EXPECT_EQ(run_error("@t\nif 2 then\nendif\nendp\n"), "2:1: error 420");
-  EXPECT_EQ(run_error("@t\nwhile 0.5\nendw\nendp\n"), "2:1: error 420");
+TEST(Expressions, ConditionIsTrueWhenNotZero) {
+  // Real posts test integer options directly (`if iSplit_ProgName_Num and ...` with the option at 2)
+  // and SolidCAM runs them; storing such a value in a logical variable is still error 420.
+  Post post("@t\n  r = 0\n  if 2 then\n    r = r + 1\n  endif\n  if 0.5\n    r = r + 10\n  endif\n"
+            "  if 0\n    r = r + 100\n  endif\nendp\n");
+  post.set("r", integer(0));
+  post.call("@t");
+  EXPECT_EQ(post.get("r"), integer(11));
+  EXPECT_EQ(run_error("@t\nglobal logical l\nl = 0.5\nendp\n"), "3:1: error 420");
 }
 
 struct ConversionCase {
