@@ -1,0 +1,91 @@
+// 2XAxisCNC programs read back into motion: a toolpath::CommandSource that executes the frames of
+// a program (relative X/Y moves, speed coefficients, instructions) and yields the neutral stream
+// commands they stand for. See docs/2xaxiscnc.md, "Reading programs back".
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <istream>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "machines/2xaxiscnc/frame.hpp"
+#include "toolpath/command.hpp"
+#include "toolpath/source.hpp"
+
+namespace twoaxis {
+
+struct Options {
+  // The machine speed of the application (mm/min) that coefficient 1 stands for. With it, moves
+  // carry `feed` = coefficient x speed and @end_program the estimated motion time.
+  double machine_speed = 0.0;
+  // Moves made at this coefficient are read as @rapid_move (the post writes rapids at it); 0: every
+  // move is a @line. X0Y0 is always a rapid.
+  double rapid_coefficient = 1.0;
+  // Numbers become single-precision floats as in the application; false keeps their decimal value
+  // (to check a post's arithmetic without the controller's rounding).
+  bool single_precision = true;
+  std::size_t max_diagnostics = 1000;  // kept; the rest are only counted
+};
+
+struct Diagnostic {
+  enum class Severity { Warning, Error };
+  Severity severity = Severity::Error;
+  std::size_t line = 0;    // 1-based
+  std::size_t column = 0;  // 1-based byte column
+  std::string message;
+};
+
+class TwoAxisReader final : public toolpath::CommandSource {
+public:
+  // Reads from `in`, which must outlive the reader; `file_name` is used in messages.
+  TwoAxisReader(std::istream& in, std::string file_name, Options options = {});
+  ~TwoAxisReader() override;
+  // Opens a file; throws toolpath::InputError when it cannot be read.
+  static std::unique_ptr<TwoAxisReader> open(const std::string& path, Options options = {});
+  // Reads a program held in memory (tests, fuzzing); the reader keeps its own copy.
+  static std::unique_ptr<TwoAxisReader> from_string(std::string text, std::string file_name, Options options = {});
+
+  // Never throws for errors in the program: each becomes a diagnostic and the frame is skipped
+  // (or its coefficient clamped), as the application would go on.
+  bool next(toolpath::Command& out) override;
+
+  std::size_t line() const { return command_line_; }  // program line of the command returned last
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+  std::size_t diagnostic_count() const { return diagnostic_total_; }
+  std::size_t error_count() const { return error_total_; }
+  const std::string& file_name() const { return file_name_; }
+
+private:
+  bool next_line(std::string_view& line);
+  void frame(std::string_view line, toolpath::Command& out, bool& produced);
+  void instruction(std::string_view text, std::size_t column, toolpath::Command& out, bool& produced);
+  void move(const Frame& f, toolpath::Command& out);
+  void end_program(toolpath::Command& out);
+  void diagnose(Diagnostic::Severity s, std::size_t column, std::string message);
+  bool read_number(std::string_view text, std::size_t column, double& value);
+
+  std::unique_ptr<std::istream> owned_;
+  std::istream& in_;
+  std::string file_name_;
+  Options options_;
+  std::string buffer_;
+  std::size_t pos_ = 0;
+  bool eof_ = false;
+  std::size_t line_ = 0, command_line_ = 0;
+  enum class Phase { StartFile, StartProgram, Frames, EndProgram, EndFile, Done } phase_ = Phase::StartFile;
+  bool first_frame_ = true;
+  bool converting_ = false;  // ArtCAM / G90 program: move frames hold absolute positions
+  double abs_x_ = 0, abs_y_ = 0;  // conversion: the previous absolute position (decimal)
+  double x_ = 0, y_ = 0, a_ = 0, coef_ = 1.0;
+  bool spindle_ = false;
+  std::array<bool, 4> relays_{};
+  double path_length_ = 0, motion_minutes_ = 0, pause_seconds_ = 0;
+  std::vector<Diagnostic> diagnostics_;
+  std::size_t diagnostic_total_ = 0, error_total_ = 0;
+  std::size_t index_ = 0;
+};
+
+}  // namespace twoaxis
