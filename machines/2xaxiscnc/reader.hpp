@@ -18,9 +18,10 @@
 namespace twoaxis {
 
 struct Options {
-  // The machine speed of the application (mm/min) that coefficient 1 stands for. With it, moves
-  // carry `feed` = coefficient x speed and @end_program the estimated motion time.
-  double machine_speed = 0.0;
+  // The machine speed of the application (mm/min) that coefficient 1 stands for (the post's default
+  // machine_speed). With it, moves carry `feed` = coefficient x speed and @end_program the estimated
+  // motion time; 0: unknown, neither is given.
+  double machine_speed = 3000.0;
   // Moves made at this coefficient are read as @rapid_move (the post writes rapids at it); 0: every
   // move is a @line. X0Y0 is always a rapid.
   double rapid_coefficient = 1.0;
