@@ -1,5 +1,8 @@
 // The one-command frames of a 2XAxisCNC program: comments and instructions (docs/2xaxiscnc.md).
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
 #include <string>
 
 #include <fmt/format.h>
@@ -152,6 +155,7 @@ void TwoAxisReader::instruction(std::string_view text, std::size_t column, Comma
       break;
     }
     case Instruction::Script:
+      if (!options_.scripts_folder.empty()) return run_script(c.argument, column, out, produced);
       diagnose(Diagnostic::Severity::Warning, column,
                fmt::format("script `{}` is not read (no scripts folder): taken as making no motion", c.argument));
       out.name = "@script_call";
@@ -161,6 +165,35 @@ void TwoAxisReader::instruction(std::string_view text, std::size_t column, Comma
     case Instruction::Unknown: return;
   }
   produced = true;
+}
+
+// The script's frames run next, in the same machine state; its commands carry `script`.
+void TwoAxisReader::run_script(std::string_view name, std::size_t column, Command& out, bool& produced) {
+  const std::string file = (std::filesystem::path(options_.scripts_folder) / std::string(name)).string();
+  for (const Input& i : inputs_)
+    if (i.script == file) {
+      diagnose(Diagnostic::Severity::Error, column, fmt::format("script `{}` runs itself: skipped", name));
+      return;
+    }
+  if (inputs_.size() > kMaxScriptDepth) {
+    diagnose(Diagnostic::Severity::Error, column, fmt::format("scripts nest deeper than {}: `{}` skipped", kMaxScriptDepth, name));
+    return;
+  }
+  auto stream = std::make_unique<std::ifstream>(file, std::ios::binary);
+  if (!*stream) {
+    diagnose(Diagnostic::Severity::Error, column, fmt::format("cannot open script `{}`: skipped", file));
+    return;
+  }
+  out.name = "@script_call";
+  out.set("name", Value::make_string(std::string(name)));
+  out.set("inlined", Value::make_logical(true));
+  out.set("file", Value::make_string(file));
+  produced = true;
+  Input input;
+  input.in = stream.get();
+  input.owned = std::move(stream);
+  input.script = file;
+  inputs_.push_back(std::move(input));
 }
 
 }  // namespace twoaxis

@@ -27,60 +27,71 @@ Value number(double v) { return Value::make_numeric(v); }
 }  // namespace
 
 TwoAxisReader::TwoAxisReader(std::istream& in, std::string file_name, Options options)
-    : in_(in), file_name_(std::move(file_name)), options_(options) {}
+    : file_name_(std::move(file_name)), options_(std::move(options)) {
+  inputs_.reserve(kMaxScriptDepth + 1);  // string_views into a buffer stay valid while a script opens
+  inputs_.emplace_back();
+  inputs_.back().in = &in;
+}
 
 TwoAxisReader::~TwoAxisReader() = default;
 
 std::unique_ptr<TwoAxisReader> TwoAxisReader::open(const std::string& path, Options options) {
   auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
   if (!*file) throw toolpath::InputError({path, 0, 0}, "cannot open file");
-  auto reader = std::make_unique<TwoAxisReader>(*file, path, options);
-  reader->owned_ = std::move(file);
+  auto reader = std::make_unique<TwoAxisReader>(*file, path, std::move(options));
+  reader->inputs_.front().owned = std::move(file);
   return reader;
 }
 
 std::unique_ptr<TwoAxisReader> TwoAxisReader::from_string(std::string text, std::string file_name, Options options) {
   auto stream = std::make_unique<std::istringstream>(std::move(text));
-  auto reader = std::make_unique<TwoAxisReader>(*stream, std::move(file_name), options);
-  reader->owned_ = std::move(stream);
+  auto reader = std::make_unique<TwoAxisReader>(*stream, std::move(file_name), std::move(options));
+  reader->inputs_.front().owned = std::move(stream);
   return reader;
 }
 
 // The next line without its LF (a CR before it is a blank for split_frame). The buffer holds one
 // chunk and the unfinished line at its end, so memory stays flat.
+// A script that ends gives the line after its call back to its caller.
 bool TwoAxisReader::next_line(std::string_view& line) {
   for (;;) {
-    const char* base = buffer_.data() + pos_;
-    const std::size_t left = buffer_.size() - pos_;
+    Input& f = inputs_.back();
+    const char* base = f.buffer.data() + f.pos;
+    const std::size_t left = f.buffer.size() - f.pos;
     if (const void* nl = std::memchr(base, '\n', left)) {
       const std::size_t len = static_cast<std::size_t>(static_cast<const char*>(nl) - base);
       line = std::string_view(base, len);
-      pos_ += len + 1;
-      ++line_;
+      f.pos += len + 1;
+      ++f.line;
       return true;
     }
-    if (eof_) {
-      if (left == 0) return false;
-      line = std::string_view(base, left);  // the last line has no line end
-      pos_ = buffer_.size();
-      ++line_;
-      return true;
+    if (f.eof) {
+      if (left > 0) {
+        line = std::string_view(base, left);  // the last line has no line end
+        f.pos = f.buffer.size();
+        ++f.line;
+        return true;
+      }
+      if (inputs_.size() == 1) return false;
+      inputs_.pop_back();
+      continue;
     }
-    buffer_.erase(0, pos_);
-    pos_ = 0;
-    const std::size_t old = buffer_.size();
-    buffer_.resize(old + kChunk);
-    in_.read(buffer_.data() + old, static_cast<std::streamsize>(kChunk));
-    const auto got = static_cast<std::size_t>(in_.gcount());
-    buffer_.resize(old + got);
-    if (got < kChunk) eof_ = true;
+    f.buffer.erase(0, f.pos);
+    f.pos = 0;
+    const std::size_t old = f.buffer.size();
+    f.buffer.resize(old + kChunk);
+    f.in->read(f.buffer.data() + old, static_cast<std::streamsize>(kChunk));
+    const auto got = static_cast<std::size_t>(f.in->gcount());
+    f.buffer.resize(old + got);
+    if (got < kChunk) f.eof = true;
   }
 }
 
 void TwoAxisReader::diagnose(Diagnostic::Severity s, std::size_t column, std::string message) {
   ++diagnostic_total_;
   if (s == Diagnostic::Severity::Error) ++error_total_;
-  if (diagnostics_.size() < options_.max_diagnostics) diagnostics_.push_back({s, line_, column, std::move(message)});
+  if (diagnostics_.size() < options_.max_diagnostics)
+    diagnostics_.push_back({s, inputs_.back().line, column, std::move(message), inputs_.back().script});
 }
 
 bool TwoAxisReader::read_number(std::string_view text, std::size_t column, double& value) {
@@ -127,15 +138,25 @@ bool TwoAxisReader::next(Command& out) {
           phase_ = Phase::EndProgram;
           continue;
         }
+        // where the frame is, before a RunScript frame opens its script
+        const std::size_t line = inputs_.back().line;
+        const bool in_script = inputs_.size() > 1;
+        if (in_script) command_script_ = inputs_.back().script;
         bool produced = false;
         frame(text, out, produced);
         if (!produced) continue;
-        command_line_ = line_;
+        command_line_ = line;
+        if (in_script) {
+          out.set("script", Value::make_string(command_script_));
+        } else {
+          command_script_.clear();
+        }
         out.index = index_++;
         return true;
       }
       case Phase::EndProgram:
         command_line_ = 0;
+        command_script_.clear();
         end_program(out);
         phase_ = Phase::EndFile;
         break;
@@ -154,8 +175,9 @@ bool TwoAxisReader::next(Command& out) {
 void TwoAxisReader::frame(std::string_view text, Command& out, bool& produced) {
   const Frame f = split_frame(text);
   if (f.count == 0) return;  // an empty line is no frame
-  const bool first = first_frame_;
-  first_frame_ = false;
+  const bool in_script = inputs_.size() > 1;
+  const bool first = first_frame_ && !in_script;
+  if (!in_script) first_frame_ = false;
   if (f.count > 3) {
     diagnose(Diagnostic::Severity::Error, f.columns[3],
              fmt::format("{} commands in a frame: expected 1 (instruction or comment), 2 (dx dy) or 3 (dx dy coefficient)",
@@ -189,7 +211,7 @@ void TwoAxisReader::move(const Frame& f, Command& out) {
   for (std::size_t i = 0; i < f.count; ++i)
     if (!read_number(f.commands[i], f.columns[i], v[i])) return;  // the frame is skipped
   double dx = v[0], dy = v[1];
-  if (converting_) {
+  if (converting_ && inputs_.size() == 1) {  // a script's moves are its own, relative
     dx = v[0] - abs_x_;
     dy = v[1] - abs_y_;
     abs_x_ = v[0];

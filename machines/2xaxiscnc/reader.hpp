@@ -28,6 +28,9 @@ struct Options {
   // Numbers become single-precision floats as in the application; false keeps their decimal value
   // (to check a post's arithmetic without the controller's rounding).
   bool single_precision = true;
+  // The application's /Scripts folder: `RunScript_<name>.script` runs that file's frames in place
+  // (nested up to 16 deep, recursion is an error). Empty: scripts are not read (a warning each).
+  std::string scripts_folder;
   std::size_t max_diagnostics = 1000;  // kept; the rest are only counted
 };
 
@@ -37,10 +40,12 @@ struct Diagnostic {
   std::size_t line = 0;    // 1-based
   std::size_t column = 0;  // 1-based byte column
   std::string message;
+  std::string file;  // the script file the frame is in; empty: the program itself
 };
 
 class TwoAxisReader final : public toolpath::CommandSource {
 public:
+  static constexpr std::size_t kMaxScriptDepth = 16;
   // Reads from `in`, which must outlive the reader; `file_name` is used in messages.
   TwoAxisReader(std::istream& in, std::string file_name, Options options = {});
   ~TwoAxisReader() override;
@@ -53,7 +58,9 @@ public:
   // (or its coefficient clamped), as the application would go on.
   bool next(toolpath::Command& out) override;
 
-  std::size_t line() const { return command_line_; }  // program line of the command returned last
+  // Line of the command returned last, in the program or, for `script_name()`, in that script.
+  std::size_t line() const { return command_line_; }
+  const std::string& script_name() const { return command_script_; }
   const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
   std::size_t diagnostic_count() const { return diagnostic_total_; }
   std::size_t error_count() const { return error_total_; }
@@ -67,15 +74,23 @@ private:
   void end_program(toolpath::Command& out);
   void diagnose(Diagnostic::Severity s, std::size_t column, std::string message);
   bool read_number(std::string_view text, std::size_t column, double& value);
+  void run_script(std::string_view name, std::size_t column, toolpath::Command& out, bool& produced);
 
-  std::unique_ptr<std::istream> owned_;
-  std::istream& in_;
+  // The program, and the scripts running inside it: each read in chunks.
+  struct Input {
+    std::unique_ptr<std::istream> owned;
+    std::istream* in = nullptr;
+    std::string buffer;
+    std::size_t pos = 0;
+    bool eof = false;
+    std::size_t line = 0;
+    std::string script;  // file name of a script; empty for the program
+  };
+  std::vector<Input> inputs_;
   std::string file_name_;
   Options options_;
-  std::string buffer_;
-  std::size_t pos_ = 0;
-  bool eof_ = false;
-  std::size_t line_ = 0, command_line_ = 0;
+  std::size_t command_line_ = 0;
+  std::string command_script_;
   enum class Phase { StartFile, StartProgram, Frames, EndProgram, EndFile, Done } phase_ = Phase::StartFile;
   bool first_frame_ = true;
   bool converting_ = false;  // ArtCAM / G90 program: move frames hold absolute positions

@@ -41,7 +41,7 @@ public:
       const auto& d = reader_->diagnostics();
       for (const auto& e : d)
         if (e.severity == twoaxis::Diagnostic::Severity::Error)
-          throw toolpath::InputError({reader_->file_name(), e.line, e.column}, e.message);
+          throw toolpath::InputError({e.file.empty() ? reader_->file_name() : e.file, e.line, e.column}, e.message);
     }
     return false;
   }

@@ -30,14 +30,14 @@ std::unique_ptr<toolpath::CommandSource> open_twoaxis(const std::string& path, s
       for (const auto& d : reader->diagnostics()) {
         const bool error = d.severity == twoaxis::Diagnostic::Severity::Error;
         if (error && !first_error) first_error = &d;
-        warnings << fmt::format("{}:{}:{}: {}: {}\n", reader->file_name(), d.line, d.column, error ? "error" : "warning",
-                                d.message);
+        warnings << fmt::format("{}:{}:{}: {}: {}\n", d.file.empty() ? reader->file_name() : d.file, d.line, d.column,
+                                error ? "error" : "warning", d.message);
       }
       const std::size_t hidden = reader->diagnostic_count() - reader->diagnostics().size();
       if (hidden > 0) warnings << fmt::format("{}: {} more diagnostics not shown\n", reader->file_name(), hidden);
       if (reader->error_count() > 0) {
         const auto& e = first_error ? *first_error : reader->diagnostics().front();
-        throw toolpath::InputError({reader->file_name(), e.line, e.column},
+        throw toolpath::InputError({e.file.empty() ? reader->file_name() : e.file, e.line, e.column},
                                    fmt::format("{} error(s) in the program; the first: {}", reader->error_count(), e.message));
       }
       return false;

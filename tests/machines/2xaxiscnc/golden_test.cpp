@@ -1,7 +1,7 @@
 // Golden folders under machines/2xaxiscnc/golden/<case>/: `program.nc` is read back and printed in
 // the canonical trace form, which must equal `expected.trace`; every diagnostic
 // (`line:col: severity: text`) must equal `expected.diagnostics` (absent: none). Optional `options`:
-// one reader setting a line (machine_speed N, rapid_coefficient K, exact).
+// one reader setting a line (machine_speed N, rapid_coefficient K, exact, scripts_folder DIR).
 // POSTPROC_UPDATE_GOLDEN=1 rewrites the expected files (review them before committing).
 #include <gtest/gtest.h>
 
@@ -39,6 +39,7 @@ twoaxis::Options parse_options(const fs::path& file) {
     if (key == "machine_speed") in >> o.machine_speed;
     else if (key == "rapid_coefficient") in >> o.rapid_coefficient;
     else if (key == "exact") o.single_precision = false;
+    else if (key == "scripts_folder") in >> o.scripts_folder;
     else ADD_FAILURE() << file << ": unknown setting " << key;
   }
   return o;
@@ -69,7 +70,7 @@ TEST_P(Golden, ReadsBackAsExpected) {
   writer.flush();
   std::string diagnostics;
   for (const auto& d : reader->diagnostics())
-    diagnostics += fmt::format("{}:{}: {}: {}\n", d.line, d.column,
+    diagnostics += fmt::format("{}{}:{}: {}: {}\n", d.file.empty() ? "" : d.file + ":", d.line, d.column,
                                d.severity == twoaxis::Diagnostic::Severity::Error ? "error" : "warning", d.message);
   expect_file(dir / "expected.trace", trace.str());
   expect_file(dir / "expected.diagnostics", diagnostics);
