@@ -77,10 +77,11 @@ ArcSettings ArcSettings::from(const MachineParameters& p) {
   if (p.has("arc_max_radius")) s.max_radius = p.numeric("arc_max_radius");
   s.max_angle = p.numeric("arc_max_angle");
   s.max_chord = p.numeric("arc_max_chord");
+  if (p.has("arc_max_deviation")) s.max_deviation = p.numeric("arc_max_deviation");
   s.min_length = p.numeric("arc_min_length");
   s.eps_angle = p.numeric("eps_angle");
   s.zero_value = p.numeric("zero_value");
-  s.limits_defaulted = !p.has("arc_max_angle") && !p.has("arc_max_chord");
+  s.limits_defaulted = !p.has("arc_max_angle") && !p.has("arc_max_chord") && !p.has("arc_max_deviation");
   return s;
 }
 
@@ -194,7 +195,7 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Fields&
   }
   if (!s.arc_exist || (helical && !s.arc_3d) || (!in_machine_plane && !s.zx_yz) ||
       (s.max_radius && arc_.radius > *s.max_radius) || (five_axis_ && !s.arc_5x) || (tilted && s.main_planes)) {
-    chords_ = pieces_ = toolpath::geometry::chord_count(arc_, s.max_angle, s.max_chord);
+    chords_ = pieces_ = toolpath::geometry::chord_count(arc_, s.max_angle, s.max_chord, s.max_deviation);
     if (settings_.limits_defaulted && warn_) {
       warn_(c, "arcs are linearised but the PRP sets neither arc_max_angle nor arc_max_chord: using 10 degrees "
                "and 30 mm / 1.1811 inch");

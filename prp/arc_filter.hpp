@@ -26,6 +26,7 @@ struct ArcSettings {
   std::optional<double> max_radius;  // larger arcs become chords
   double max_angle = 10.0;    // chord limits when linearising
   double max_chord = 30.0;
+  double max_deviation = 0.0;  // arc_max_deviation (ours): the chords stay this close to the arc; 0: unused
   double min_length = 0.0;    // shorter arcs (or pieces) become one line
   double eps_angle = 0.0;     // smaller sweeps become one line
   double zero_value = 0.0;    // a rise below this is not helical

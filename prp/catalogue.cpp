@@ -100,6 +100,7 @@ const KeyInfo kKeys[] = {
     {"arc_gt_180", K::Logical, none, false, "Y"},
     {"arc_max_chord", K::Number, none, false, "30.0000, 1.1811"},
     {"arc_max_angle", K::Number, none, false, "10.0000"},
+    {"arc_max_deviation", K::Number, none, false, ""},  // ours: chordal tolerance of linearised arcs
     {"arc_max_radius", K::Number, none, false, ""},
     {"arc_3d_4x", K::Logical, none, false, "Y"},
     {"arc_min_length", K::Number, none, false, "0"},

@@ -244,6 +244,8 @@ void Loader::check_ranges() {
   }
   if (const Parameter* p = get("arc_max_chord"); p && (p->metric[0] <= 0 || p->inch[0] <= 0))
     error(p->where.column, "arc_max_chord must be greater than 0", p->where.line);
+  if (const Parameter* p = get("arc_max_deviation"); p && !(p->metric[0] > 0 && p->inch[0] > 0))
+    error(p->where.column, "arc_max_deviation must be greater than 0", p->where.line);
   if (const Parameter* p = get("arc_max_angle"); p) {
     for (double a : {p->metric[0], p->inch[0]})
       if (!(a > 0 && a <= 180)) {

@@ -120,11 +120,16 @@ std::vector<double> quadrant_crossings(const Arc& arc, double tolerance) {
   return out;
 }
 
-int chord_count(const Arc& arc, double max_angle, double max_chord) {
+int chord_count(const Arc& arc, double max_angle, double max_chord, double max_deviation) {
   double n = 1.0;
   if (max_angle > 0) n = std::max(n, std::ceil(arc.sweep / max_angle - 1e-9));
   if (max_chord > 0 && max_chord < 2.0 * arc.radius) {
     const double theta = 2.0 * std::asin(max_chord / (2.0 * arc.radius)) / kDegree;
+    n = std::max(n, std::ceil(arc.sweep / theta - 1e-9));
+  }
+  if (max_deviation > 0 && max_deviation < arc.radius) {
+    // a chord spanning theta lies at most r (1 - cos(theta / 2)) inside the arc
+    const double theta = 2.0 * std::acos(1.0 - max_deviation / arc.radius) / kDegree;
     n = std::max(n, std::ceil(arc.sweep / theta - 1e-9));
   }
   return static_cast<int>(std::min(n, 1e6));  // a runaway count (radius 1e300) stays bounded

@@ -62,6 +62,6 @@ std::vector<double> quadrant_crossings(const Arc& arc, double tolerance = 1e-6);
 
 // Number of equal chords needed so that no chord spans more than `max_angle` degrees nor is
 // longer than `max_chord` (either limit ignored when not positive); at least 1.
-int chord_count(const Arc& arc, double max_angle, double max_chord);
+int chord_count(const Arc& arc, double max_angle, double max_chord, double max_deviation = 0.0);
 
 }  // namespace toolpath::geometry

@@ -83,6 +83,24 @@ private:
 // compensation off: the programmed path is compared). Events carry their NC line.
 std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program);
 
+// The controller a verified post writes for. A 2XAxisCNC program has no Z, no arcs, no tools and
+// speed coefficients instead of feeds (docs/2xaxiscnc.md, "verify"): its motion is compared in X Y,
+// every straight move as a feed at coefficient x machine_speed.
+struct Target {
+  enum class Kind { PikoCnc, TwoAxisCnc };
+  Kind kind = Kind::PikoCnc;
+  double machine_speed = 3000.0;   // mm/min at coefficient 1 (the 2XAxisCNC post's machine_speed)
+  double rapid_coefficient = 1.0;  // the post's rapid_coef
+};
+
+// The NC side of a 2XAxisCNC program (verify_twoaxis.cpp). Errors in the program are thrown as
+// toolpath::InputError when the program ends.
+std::unique_ptr<MotionSource> twoaxis_nc_motion(const std::filesystem::path& program, const Target& target);
+// The toolpath side as a 2XAxisCNC machine can make it: moves projected on X Y from the program
+// origin, feeds turned into coefficients as the post rounds them, tool changes dropped, the spindle
+// only on or off. `source` must outlive the result.
+std::unique_ptr<MotionSource> twoaxis_expected(MotionSource& source, const Target& target);
+
 // Drops moves shorter than the tolerance, joins collinear moves, drops spindle events that change
 // nothing. `source` must outlive the result.
 std::unique_ptr<MotionSource> normalised(MotionSource& source, const Tolerances& tolerances);
@@ -115,6 +133,7 @@ struct JobReport {
 // and compares. The program is written to `keep_program` when given, else to a temporary folder
 // that is removed. Throws what Engine and the readers throw (errors in the inputs).
 JobReport verify_job(const EngineOptions& engine_options, const std::string& job, const Tolerances& tolerances,
-                     const std::optional<std::filesystem::path>& keep_program = std::nullopt);
+                     const std::optional<std::filesystem::path>& keep_program = std::nullopt,
+                     const Target& target = {});
 
 }  // namespace postproc::verify

@@ -47,7 +47,7 @@ std::string line_of(const std::filesystem::path& file, std::size_t number) {
 }  // namespace
 
 JobReport verify_job(const EngineOptions& engine_options, const std::string& job, const Tolerances& tolerances,
-                     const std::optional<std::filesystem::path>& keep_program) {
+                     const std::optional<std::filesystem::path>& keep_program, const Target& target) {
   Engine engine(engine_options);
   TemporaryFolder folder;
   std::filesystem::path main_file;
@@ -69,12 +69,15 @@ JobReport verify_job(const EngineOptions& engine_options, const std::string& job
   }
   JobReport report;
   report.program = main_file;
+  std::unique_ptr<MotionSource> owned_expected;  // under the 2XAxisCNC projection
   if (keep_program) {
     std::filesystem::copy_file(main_file, *keep_program, std::filesystem::copy_options::overwrite_existing);
     report.program = *keep_program;
   }
   auto expected_raw = expected.motion();
-  auto actual_raw = nc_motion(main_file);
+  const bool twoaxis = target.kind == Target::Kind::TwoAxisCnc;
+  auto actual_raw = twoaxis ? twoaxis_nc_motion(main_file, target) : nc_motion(main_file);
+  if (twoaxis) expected_raw = twoaxis_expected(*(owned_expected = std::move(expected_raw)), target);
   auto expected_motion = normalised(*expected_raw, tolerances);
   auto actual_motion = normalised(*actual_raw, tolerances);
   report.result = compare(*expected_motion, *actual_motion, tolerances);

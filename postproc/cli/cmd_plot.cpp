@@ -195,7 +195,7 @@ Subcommand plot_command() {
       "Draw the toolpath in XY as SVG (rapids dashed, feed moves solid).",
       {
           {"--output", "-o", true, "the SVG file to write (written to a temporary name, then renamed)"},
-          {"--dialect", "", true, "input format: trace, pikocnc, pikocnc-2016 (default: by extension, .trace or G-code)"},
+          {"--dialect", "", true, "input format: trace, pikocnc, pikocnc-2016, 2xaxiscnc (default: by extension, .trace or G-code)"},
       },
       run_plot,
   };

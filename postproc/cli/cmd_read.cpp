@@ -6,6 +6,7 @@
 #include <memory>
 #include <ostream>
 
+#include "machines/2xaxiscnc/reader.hpp"
 #include "machines/pikocnc/reader.hpp"
 #include "postproc/cli/cli.hpp"
 #include "postproc/cli/open_input.hpp"
@@ -14,11 +15,46 @@
 
 namespace postproc::cli {
 
+namespace {
+
+// A 2XAxisCNC program: every diagnostic is printed when the stream ends; errors (the frames were
+// skipped or clamped) then fail the command with the first error's position.
+std::unique_ptr<toolpath::CommandSource> open_twoaxis(const std::string& path, std::ostream& warnings) {
+  struct Reporting final : toolpath::CommandSource {
+    std::unique_ptr<twoaxis::TwoAxisReader> reader;
+    std::ostream& warnings;
+    Reporting(std::unique_ptr<twoaxis::TwoAxisReader> r, std::ostream& w) : reader(std::move(r)), warnings(w) {}
+    bool next(toolpath::Command& out) override {
+      if (reader->next(out)) return true;
+      const twoaxis::Diagnostic* first_error = nullptr;
+      for (const auto& d : reader->diagnostics()) {
+        const bool error = d.severity == twoaxis::Diagnostic::Severity::Error;
+        if (error && !first_error) first_error = &d;
+        warnings << fmt::format("{}:{}:{}: {}: {}\n", d.file.empty() ? reader->file_name() : d.file, d.line, d.column,
+                                error ? "error" : "warning", d.message);
+      }
+      const std::size_t hidden = reader->diagnostic_count() - reader->diagnostics().size();
+      if (hidden > 0) warnings << fmt::format("{}: {} more diagnostics not shown\n", reader->file_name(), hidden);
+      if (reader->error_count() > 0) {
+        const auto& e = first_error ? *first_error : reader->diagnostics().front();
+        throw toolpath::InputError({e.file.empty() ? reader->file_name() : e.file, e.line, e.column},
+                                   fmt::format("{} error(s) in the program; the first: {}", reader->error_count(), e.message));
+      }
+      return false;
+    }
+  };
+  return std::make_unique<Reporting>(twoaxis::TwoAxisReader::open(path), warnings);
+}
+
+}  // namespace
+
 std::unique_ptr<toolpath::CommandSource> open_source(const std::string& path, const std::string& dialect,
                                                      std::ostream& warnings, bool nc_lines) {
   if (dialect == "trace") return toolpath::TraceReader::open(path);
+  if (dialect == "2xaxiscnc") return open_twoaxis(path, warnings);
   const auto piko = pikocnc::parse_dialect(dialect);
-  if (!piko) throw UsageError{"unknown dialect `" + dialect + "` (known: trace, pikocnc, pikocnc-2016, pikocnc-2025)"};
+  if (!piko)
+    throw UsageError{"unknown dialect `" + dialect + "` (known: trace, pikocnc, pikocnc-2016, pikocnc-2025, 2xaxiscnc)"};
   pikocnc::Options options;
   options.dialect = *piko;
   options.nc_lines_in_trace = nc_lines;
@@ -71,7 +107,7 @@ Subcommand read_command() {
       "postproc read [--dialect NAME] [--summary] FILE",
       "Read a command stream (or NC code) and print it in canonical trace form.",
       {
-          {"--dialect", "", true, "input format: trace (default), pikocnc (= pikocnc-2025), pikocnc-2016"},
+          {"--dialect", "", true, "input format: trace (default), pikocnc (= pikocnc-2025), pikocnc-2016, 2xaxiscnc"},
           {"--summary", "", false, "print the number of commands of each kind instead"},
           {"--nc-lines", "", false, "G-code input: attach each NC line to the first command it produced"},
       },

@@ -61,7 +61,7 @@ int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
 Subcommand run_command() {
   std::vector<OptionSpec> options = engine_option_specs();
   options.push_back({"-o", "", true, "output: - (stdout, the default), a folder, or the main file"});
-  options.push_back({"--dialect", "", true, "input format: trace (default), pikocnc (= pikocnc-2025), pikocnc-2016"});
+  options.push_back({"--dialect", "", true, "input format: trace (default), pikocnc (= pikocnc-2025), pikocnc-2016, 2xaxiscnc"});
   options.push_back({"--crlf", "", false, "end lines with CR LF (as SolidCAM on Windows) instead of LF"});
   options.push_back({"--quiet", "-q", false, "no progress bar and no summary"});
   return {

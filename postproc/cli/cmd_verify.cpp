@@ -8,6 +8,7 @@
 #include "postproc/cli/cli.hpp"
 #include "postproc/cli/cli_support.hpp"
 #include "postproc/checks/verify.hpp"
+#include "toolpath/value.hpp"
 
 namespace postproc::cli {
 namespace {
@@ -24,6 +25,27 @@ double positive_number(const Arguments& args, std::string_view option, double fa
   throw UsageError{fmt::format("{} needs a positive number, not `{}`", option, text)};
 }
 
+// The controller the post writes for. A 2XAxisCNC post's machine speed and rapid coefficient are
+// its `input` answers machine_speed and rapid_coef (the post's defaults otherwise).
+verify::Target verify_target(const std::string& dialect, const EngineOptions& engine) {
+  verify::Target t;
+  if (dialect == "pikocnc" || dialect == "pikocnc-2025") return t;
+  if (dialect != "2xaxiscnc") throw UsageError{"verify knows the dialects pikocnc and 2xaxiscnc, not `" + dialect + "`"};
+  t.kind = verify::Target::Kind::TwoAxisCnc;
+  for (const auto& a : engine.answers) {
+    double* field = toolpath::iequals(a.name, "machine_speed") ? &t.machine_speed
+                    : toolpath::iequals(a.name, "rapid_coef")  ? &t.rapid_coefficient
+                                                               : nullptr;
+    if (!field) continue;
+    try {
+      *field = std::stod(a.value);
+    } catch (const std::exception&) {
+      // the post rejects the answer itself, naming its input statement
+    }
+  }
+  return t;
+}
+
 void print_side(std::ostream& out, std::string_view label, const std::optional<verify::Motion>& m) {
   out << fmt::format("  {:<9}{}\n", label, m ? verify::describe(*m) : std::string("(nothing)"));
 }
@@ -37,7 +59,8 @@ int run_verify(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (args.has("--nc")) keep = args.value("--nc");
 
   const std::string& job = args.positional()[0];
-  verify::JobReport report = verify::verify_job(engine_opts, job, tolerances, keep);
+  const verify::Target target = verify_target(args.value("--dialect", "pikocnc"), engine_opts);
+  verify::JobReport report = verify::verify_job(engine_opts, job, tolerances, keep, target);
   const auto& r = report.result;
   if (!r.divergence) {
     if (!args.has("--quiet")) out << fmt::format("{}: ok, {} motion events match\n", job, r.compared);
@@ -59,10 +82,11 @@ Subcommand verify_command() {
   options.push_back({"--tolerance", "", true, "mm by which positions, centres and radii may differ (default 0.001)"});
   options.push_back({"--nc", "", true, "also write the NC program that was read back to this file"});
   options.push_back({"--quiet", "-q", false, "print nothing when the motion matches"});
+  options.push_back({"--dialect", "", true, "the controller of the post: pikocnc (default) or 2xaxiscnc"});
   return {
       "verify",
-      "postproc verify --post P.gpp [--prp P.prp] [--tolerance MM] [--nc FILE] JOB.trace",
-      "Post a job with a PikoCNC post, read the NC back with the PikoCNC model, compare the motion.",
+      "postproc verify --post P.gpp [--prp P.prp] [--dialect pikocnc|2xaxiscnc] [--tolerance MM] [--nc FILE] JOB.trace",
+      "Post a job with a PikoCNC (or 2XAxisCNC) post, read the NC back with the controller model, compare the motion.",
       options,
       run_verify,
   };

@@ -1,5 +1,5 @@
 // Opens an input of `read`, `plot`, ...: a `.trace` stream or NC code read back by a controller
-// model (`--dialect pikocnc`). Implemented in cmd_read.cpp.
+// model (`--dialect pikocnc`, `--dialect 2xaxiscnc`). Implemented in cmd_read.cpp.
 #pragma once
 
 #include <memory>

@@ -63,6 +63,31 @@ TEST(ArcFilter, HelixLinearisedIn27EqualStepsAsTheManualPrints) {
   EXPECT_EQ(get(out.back(), "zpos"), -2);
 }
 
+// arc_max_deviation (ours, for the 2XAxisCNC post): a quarter circle of radius 10 within 0.01 mm
+// takes ceil(90 / (2 acos(1 - 0.01 / 10))) = 18 chords of 5 degrees, each within the tolerance.
+TEST(ArcFilter, ChordalDeviationSetsTheChordCount) {
+  ArcSettings s;
+  s.arc_exist = false;
+  s.max_angle = 180;
+  s.max_chord = 1e6;
+  s.max_deviation = 0.01;
+  const std::vector<Command> quarter = {
+      command("@rapid_move", {{"xpos", num(10)}, {"ypos", num(0)}, {"zpos", num(0)}}, 1),
+      command("@arc",
+              {{"xpos", num(0)}, {"ypos", num(10)}, {"zpos", num(0)}, {"feed", num(100)}, {"xcenter", num(0)},
+               {"ycenter", num(0)}, {"xcenter_rel", num(-10)}, {"ycenter_rel", num(0)}, {"radius", num(10)},
+               {"start_angle", num(0)}, {"end_angle", num(90)}, {"arc_direction", word("CCW")},
+               {"arc_plane", word("XY")}, {"arc_size", num(90)}},
+              2)};
+  auto out = run(quarter, s);
+  ASSERT_EQ(out.size(), 19u);  // the rapid and 18 chords
+  for (std::size_t i = 1; i < out.size(); ++i) {
+    const double deg = std::atan2(get(out[i], "ypos"), get(out[i], "xpos")) * 180 / M_PI;
+    EXPECT_NEAR(deg, 5.0 * static_cast<double>(i), 1e-9);
+  }
+  EXPECT_LE(10 * (1 - std::cos(2.5 * M_PI / 180)), 0.01);
+}
+
 TEST(ArcFilter, HelixOver180IsHalvedAtZeroHeight) {
   ArcSettings s;
   s.gt_180 = false;

@@ -84,6 +84,8 @@ const ErrorCase kErrorCases[] = {
      "t.prp:3:16: proc_num_dflt 9000 is above proc_num_max 8999"},
     {"ChordNotPositive", "@pre_processor\narc_max_chord = 30, 0\nendp\n",
      "t.prp:2:17: arc_max_chord must be greater than 0"},
+    {"DeviationNotPositive", "@pre_processor\narc_max_deviation = 0.01, 0\nendp\n",
+     "t.prp:2:21: arc_max_deviation must be greater than 0"},
     {"MaxAngle", "@pre_processor\narc_max_angle = 190\nendp\n", "t.prp:2:17: arc_max_angle must be in (0, 180] degrees"},
     {"NegativeEpsilon", "@pre_processor\neps_line = -0.1\nendp\n", "t.prp:2:12: eps_line must not be negative"},
     {"AllErrorsAtOnce", "@pre_processor\narc_exist = maybe\ngen_procs = X\narc_max_angle = 0\nendp\n",

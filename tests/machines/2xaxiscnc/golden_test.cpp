@@ -1,0 +1,90 @@
+// Golden folders under machines/2xaxiscnc/golden/<case>/: `program.nc` is read back and printed in
+// the canonical trace form, which must equal `expected.trace`; every diagnostic
+// (`line:col: severity: text`) must equal `expected.diagnostics` (absent: none). Optional `options`:
+// one reader setting a line (machine_speed N, rapid_coefficient K, exact, scripts_folder DIR).
+// POSTPROC_UPDATE_GOLDEN=1 rewrites the expected files (review them before committing).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "machines/2xaxiscnc/reader.hpp"
+#include "toolpath/trace_writer.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kRoot = "machines/2xaxiscnc/golden";
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+twoaxis::Options parse_options(const fs::path& file) {
+  twoaxis::Options o;
+  std::ifstream in(file);
+  std::string key;
+  while (in >> key) {
+    if (key == "machine_speed") in >> o.machine_speed;
+    else if (key == "rapid_coefficient") in >> o.rapid_coefficient;
+    else if (key == "exact") o.single_precision = false;
+    else if (key == "scripts_folder") in >> o.scripts_folder;
+    else ADD_FAILURE() << file << ": unknown setting " << key;
+  }
+  return o;
+}
+
+void expect_file(const fs::path& file, const std::string& actual) {
+  if (std::getenv("POSTPROC_UPDATE_GOLDEN")) {
+    if (actual.empty()) {
+      fs::remove(file);
+    } else {
+      std::ofstream(file, std::ios::binary) << actual;
+    }
+    return;
+  }
+  EXPECT_EQ(fs::exists(file) ? slurp(file) : std::string(), actual) << file;
+}
+
+class Golden : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Golden, ReadsBackAsExpected) {
+  const fs::path dir = kRoot / GetParam();
+  const auto options = fs::exists(dir / "options") ? parse_options(dir / "options") : twoaxis::Options{};
+  auto reader = twoaxis::TwoAxisReader::open((dir / "program.nc").string(), options);
+  std::ostringstream trace;
+  toolpath::TraceWriter writer(trace);
+  toolpath::Command c;
+  while (reader->next(c)) writer.write(c);
+  writer.flush();
+  std::string diagnostics;
+  for (const auto& d : reader->diagnostics())
+    diagnostics += fmt::format("{}{}:{}: {}: {}\n", d.file.empty() ? "" : d.file + ":", d.line, d.column,
+                               d.severity == twoaxis::Diagnostic::Severity::Error ? "error" : "warning", d.message);
+  expect_file(dir / "expected.trace", trace.str());
+  expect_file(dir / "expected.diagnostics", diagnostics);
+}
+
+std::vector<std::string> cases() {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(kRoot))
+    if (e.is_directory()) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(TwoAxis, Golden, ::testing::ValuesIn(cases()),
+                         [](const auto& info) { return info.param; });
+
+}  // namespace
