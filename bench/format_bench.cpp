@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "gppl/display_format.hpp"
-#include "gppl/functions.hpp"
+#include "gppl/builtins/display_format.hpp"
+#include "gppl/builtins/functions.hpp"
 
 namespace {
 

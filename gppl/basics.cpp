@@ -1,9 +1,17 @@
-// Value factories and error types of the public header.
+// Value factories and error types of the public header, and the name folding both halves share.
 #include <fmt/format.h>
 
 #include "gppl/gppl.hpp"
+#include "gppl/program.hpp"
 
 namespace gppl {
+
+std::string lower(std::string_view s) {
+  std::string r(s);
+  for (char& c : r)
+    if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+  return r;
+}
 
 Value Value::of_integer(std::int64_t v) {
   Value r;

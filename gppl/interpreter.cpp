@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "gppl/compiler.hpp"
-#include "gppl/machine.hpp"
+#include "gppl/compile/compiler.hpp"
+#include "gppl/run/machine.hpp"
 
 namespace gppl {
 

@@ -8,7 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "gppl/functions.hpp"
+#include "gppl/builtins/functions.hpp"
 #include "gppl/gppl.hpp"
 
 namespace gppl {
@@ -138,6 +138,10 @@ struct SystemSlots {
       integer_def_f, numeric_def_f, remove_blanks, end_block_text, gcode_space, clear_change_after_gen;
   std::uint32_t gcode;  // variable id (gcode_space pads groups that print it)
 };
+
+// GPPL names are case-insensitive: both halves compare them in lower case (ASCII only, the
+// rest of an 8-bit name is kept as it is).
+std::string lower(std::string_view s);
 
 }  // namespace gppl
 

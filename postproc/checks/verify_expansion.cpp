@@ -17,7 +17,7 @@
 #include <fmt/format.h>
 
 #include "postproc/checks/verify_modeller.hpp"
-#include "prp/command_spool.hpp"
+#include "prp/filters/command_spool.hpp"
 #include "toolpath/value.hpp"
 
 namespace postproc::verify {

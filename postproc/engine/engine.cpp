@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "gppl/gppl.hpp"
-#include "gppl/system_variables.hpp"
+#include "gppl/compile/system_variables.hpp"
 #include "postproc/engine/directive.hpp"
 #include "postproc/engine/engine_sink.hpp"
 #include "postproc/engine/enumerations.hpp"

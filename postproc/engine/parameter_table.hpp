@@ -1,5 +1,5 @@
 // The parameters of every toolpath command (gpptool-commands.md, sections 3 and 5-14): which commands
-// carry them, and their kinds. Every one is a system variable (gppl/system_variables.inc decides its
+// carry them, and their kinds. Every one is a system variable (gppl/compile/system_variables.inc decides its
 // type; tests/postproc/tables_test.cpp holds the kinds here to it). A parameter that is not in the
 // table still reaches the post when the post uses its name (docs/gppl-language.md, "Names").
 #pragma once

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "gppl/display_format.hpp"
-#include "gppl/display_format_internal.hpp"
+#include "gppl/builtins/display_format.hpp"
+#include "gppl/builtins/display_format_internal.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <limits>
 #include <random>
 
-#include "gppl/display_format.hpp"
+#include "gppl/builtins/display_format.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "gppl/functions.hpp"
+#include "gppl/builtins/functions.hpp"
 
 namespace function_test {
 

@@ -2,7 +2,7 @@
 // norm360, instr with a start position, and the array functions adims, alen, asize.
 #include <gtest/gtest.h>
 
-#include "gppl/functions.hpp"
+#include "gppl/builtins/functions.hpp"
 #include "support.hpp"
 #include "tests/gppl/function_call.hpp"
 

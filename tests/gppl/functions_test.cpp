@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <numbers>
 
-#include "gppl/functions.hpp"
+#include "gppl/builtins/functions.hpp"
 #include "tests/gppl/function_call.hpp"
 
 namespace {

@@ -1,4 +1,4 @@
-// The system-variable table (gppl/system_variables.inc): it covers SolidCAM's whole list, every
+// The system-variable table (gppl/compile/system_variables.inc): it covers SolidCAM's whole list, every
 // name compiles where a post prints it, and docs/system-variables.md is the table rendered.
 // POSTPROC_UPDATE_DOCS=1 rewrites the doc from the table instead of comparing.
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "gppl/gppl.hpp"
-#include "gppl/system_variables.hpp"
+#include "gppl/compile/system_variables.hpp"
 
 namespace {
 
@@ -95,7 +95,7 @@ std::string render_reference() {
         "Every name SolidCAM predefines for a post (1,629 names, from the completion list of its GPPL\n"
         "editor), the command parameters of the GPPTool catalogue the list leaves out, and `PI`, `TRUE`,\n"
         "`FALSE`. A post uses any of them without declaring it. This page is generated from\n"
-        "`gppl/system_variables.inc` by `tests/gppl/system_variables_test.cpp` (run it with\n"
+        "`gppl/compile/system_variables.inc` by `tests/gppl/system_variables_test.cpp` (run it with\n"
         "`POSTPROC_UPDATE_DOCS=1` after editing the table); the test fails when the two differ.\n\n"
         "Columns:\n\n"
         "* **type**: `integer`, `numeric`, `logical` or `string`; an array shows its sizes (`string<<3,100>>`).\n"
@@ -149,7 +149,7 @@ TEST(SystemVariables, ReferencePageIsTheTable) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream actual;
   actual << in.rdbuf();
-  EXPECT_TRUE(actual.str() == expected) << path << " differs from gppl/system_variables.inc: rerun this test with "
+  EXPECT_TRUE(actual.str() == expected) << path << " differs from gppl/compile/system_variables.inc: rerun this test with "
                                                    "POSTPROC_UPDATE_DOCS=1";
 }
 

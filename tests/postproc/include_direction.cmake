@@ -1,10 +1,15 @@
 # cmake -DROOT=<source dir> -P include_direction.cmake
-# Fails when a library's sources include a folder above it in the dependency order
+# Fails when a library's sources include a folder above it in the dependency order, or when the
+# halves inside gppl/ (compile, run, builtins) and prp/ (params, filters) reach into each other
 # (docs/architecture.md): each folder lists the include prefixes it must not use.
 set(rules
   "toolpath|gppl/ prp/ machines/ postproc/ bench/ tests/"
   "gppl|toolpath/ prp/ machines/ postproc/ bench/ tests/"
   "prp|gppl/ machines/ postproc/ bench/ tests/"
+  "gppl/compile|gppl/run/"
+  "gppl/run|gppl/compile/"
+  "gppl/builtins|gppl/compile/ gppl/run/"
+  "prp/params|prp/filters/"
   "machines|gppl/ prp/ postproc/ bench/ tests/"
   "postproc/engine|machines/ postproc/checks/ postproc/cli/ bench/ tests/"
   "postproc/checks|postproc/cli/ bench/ tests/"

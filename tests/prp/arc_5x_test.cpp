@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "prp/arc_filter.hpp"
+#include "prp/filters/arc_filter.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

@@ -7,7 +7,7 @@
 #include <random>
 #include <sstream>
 
-#include "prp/arc_filter.hpp"
+#include "prp/filters/arc_filter.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "prp/arc_filter.hpp"
+#include "prp/filters/arc_filter.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

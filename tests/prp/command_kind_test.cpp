@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "prp/command_kind.hpp"
-#include "prp/kinematic_sets.hpp"
-#include "prp/precision_filter.hpp"
+#include "prp/filters/command_kind.hpp"
+#include "prp/filters/kinematic_sets.hpp"
+#include "prp/filters/precision_filter.hpp"
 
 namespace prp {
 namespace {

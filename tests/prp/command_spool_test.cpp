@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "prp/command_spool.hpp"
+#include "prp/filters/command_spool.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "prp/drill_expansion.hpp"
+#include "prp/filters/drill_expansion.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "prp/arc_filter.hpp"
-#include "prp/precision_filter.hpp"
-#include "prp/procedure_generation.hpp"
-#include "prp/structure_check.hpp"
+#include "prp/filters/arc_filter.hpp"
+#include "prp/filters/precision_filter.hpp"
+#include "prp/filters/procedure_generation.hpp"
+#include "prp/filters/structure_check.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

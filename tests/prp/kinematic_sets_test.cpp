@@ -12,7 +12,7 @@
 
 #include <Eigen/Geometry>
 
-#include "prp/arc_filter.hpp"
+#include "prp/filters/arc_filter.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

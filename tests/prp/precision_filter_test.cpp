@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "prp/precision_filter.hpp"
+#include "prp/filters/precision_filter.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

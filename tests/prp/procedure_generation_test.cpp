@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "prp/procedure_generation.hpp"
+#include "prp/filters/procedure_generation.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

@@ -1,7 +1,7 @@
 // eps_line: short lines are dropped, measured from the last position sent; a contour's last line stays.
 #include <gtest/gtest.h>
 
-#include "prp/short_line_filter.hpp"
+#include "prp/filters/short_line_filter.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

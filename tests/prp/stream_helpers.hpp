@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "prp/arc_filter.hpp"
+#include "prp/filters/arc_filter.hpp"
 #include "toolpath/command.hpp"
 #include "toolpath/source.hpp"
 

@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "prp/compensation_check.hpp"
-#include "prp/full_coordinates.hpp"
-#include "prp/init_cpos.hpp"
-#include "prp/mode_commands.hpp"
+#include "prp/filters/compensation_check.hpp"
+#include "prp/filters/full_coordinates.hpp"
+#include "prp/filters/init_cpos.hpp"
+#include "prp/filters/mode_commands.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

@@ -1,7 +1,7 @@
 // Structure switches checked against a structured trace, and default start/end positions.
 #include <gtest/gtest.h>
 
-#include "prp/structure_check.hpp"
+#include "prp/filters/structure_check.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

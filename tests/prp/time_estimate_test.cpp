@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "prp/time_estimate.hpp"
+#include "prp/filters/time_estimate.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;

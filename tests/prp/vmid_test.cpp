@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "prp/catalogue.hpp"
+#include "prp/params/catalogue.hpp"
 #include "prp/prp.hpp"
-#include "prp/vmid_map.hpp"
+#include "prp/params/vmid_map.hpp"
 
 using prp::Units;
 

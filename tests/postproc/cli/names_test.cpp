@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "gppl/system_variables.hpp"
+#include "gppl/compile/system_variables.hpp"
 #include "tests/support/cli_run.hpp"
 
 namespace {

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "gppl/system_variables.hpp"
+#include "gppl/compile/system_variables.hpp"
 #include "postproc/engine/enumerations.hpp"
 #include "postproc/engine/parameter_table.hpp"
 #include "toolpath/value.hpp"

@@ -1,0 +1,252 @@
+// Display formats: the printer, run once per printed value (the parser is display_format_parse.cpp).
+//
+// The fast path turns the value into one integer, `units` = the value rounded to N decimals times
+// 10^N, and writes its digits straight into the output. Integers need no rounding. For a numeric
+// value the rounding is decided by one multiplication s = |x| * 10^N whenever that is provably the
+// same as the documented rule (15 significant digits first, then half away from zero at N
+// decimals); otherwise, and for N > 15, the exact printer in display_format_exact.cpp decides.
+//
+// Why one multiplication suffices: let D be |x| taken to 15 significant digits. With
+// 10^e <= |x| < 10^(e+1), |x - D| <= 0.5 * 10^(e-14) <= 5e-15 * |x|, so D * 10^N lies within
+// 5e-15 * s of the exact s. The computed s is off by at most 2^-53 * s (10^N is exact up to 1e22,
+// the product is rounded once). Rounding half away from zero only jumps at half-integers, so when
+// the computed s is farther than 6e-15 * s from the nearest half-integer, D * 10^N rounds to the
+// same integer as s does. That condition also excludes every case where D itself has no digit
+// left to round (s >= 1e14 makes the bound at least 0.6, more than any distance to a half), and
+// s < 2^52 keeps the integer part and the fraction of s exact. The tests compare this path with
+// the exact printer on a large table of values for every format shape.
+#include "gppl/builtins/display_format.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <iterator>
+
+#include "gppl/builtins/display_format_internal.hpp"
+
+namespace gppl {
+
+namespace {
+
+constexpr int max_fast_fraction = fast::max_fraction;
+constexpr std::uint64_t powers_of_ten[] = {1,
+                                           10,
+                                           100,
+                                           1'000,
+                                           10'000,
+                                           100'000,
+                                           1'000'000,
+                                           10'000'000,
+                                           100'000'000,
+                                           1'000'000'000,
+                                           10'000'000'000,
+                                           100'000'000'000,
+                                           1'000'000'000'000,
+                                           10'000'000'000'000,
+                                           100'000'000'000'000,
+                                           1'000'000'000'000'000,
+                                           10'000'000'000'000'000,
+                                           100'000'000'000'000'000,
+                                           1'000'000'000'000'000'000,
+                                           10'000'000'000'000'000'000u};
+constexpr double double_powers_of_ten[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                           1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+static_assert(std::size(double_powers_of_ten) == max_fast_fraction + 1);
+
+constexpr double exact_fraction_limit = 4503599627370496.0;  // 2^52: below it s - floor(s) is exact
+constexpr double decision_margin = 6e-15;                    // see the proof at the top
+
+}  // namespace
+
+bool fast::round_to_units(double magnitude, int n, std::uint64_t& units) {
+  const double s = magnitude * double_powers_of_ten[n];
+  if (!(s < exact_fraction_limit)) return false;
+  const auto whole = static_cast<std::uint64_t>(s);
+  const double from_half = (s - static_cast<double>(whole)) - 0.5;
+  if (std::fabs(from_half) <= s * decision_margin) return false;
+  units = whole + (from_half > 0 ? 1 : 0);
+  return true;
+}
+
+namespace {
+
+// "000".."999", four bytes each: three digits, then the count of trailing zeros (bits 0-1, 3 for
+// "000") and of significant digits (bits 2-3, 0 for "000"). Four bytes of slack after the last.
+constexpr auto digit_triples = [] {
+  std::array<char, 4004> t{};
+  for (int i = 0; i < 1000; ++i) {
+    const int digits[3] = {i / 100, i / 10 % 10, i % 10};
+    int trailing = 0;
+    while (trailing < 3 && digits[2 - trailing] == 0) ++trailing;
+    const int significant = i >= 100 ? 3 : i >= 10 ? 2 : i >= 1 ? 1 : 0;
+    for (int d = 0; d < 3; ++d) t[static_cast<std::size_t>(4 * i + d)] = static_cast<char>('0' + digits[d]);
+    t[static_cast<std::size_t>(4 * i + 3)] = static_cast<char>(trailing | significant << 2);
+  }
+  return t;
+}();
+
+const char* triple(std::uint64_t v) { return digit_triples.data() + 4 * v; }
+
+// Writes the integer digits of v so that they end at `end` (none for 0); returns where they
+// start. Up to two zeros before the start are scratch.
+char* write_integer_digits(char* end, std::uint64_t v) {
+  char* first = end;
+  while (v >= 1000) {
+    const std::uint64_t q = v / 1000;
+    first -= 3;
+    std::memcpy(first, triple(v - q * 1000), 3);
+    v = q;
+  }
+  const char* top = triple(v);
+  std::memcpy(first - 3, top, 3);  // with its leading zeros, which the caller leaves out
+  return first - (top[3] >> 2);
+}
+
+// Writes the n fraction digits of v (< 10^n, leading zeros included) from `start`, plus scratch
+// up to four bytes; returns how many remain once trailing zeros are dropped.
+int write_fraction_digits(char* start, std::uint64_t v, int n) {
+  if (n <= 3) {  // one table entry: v scaled to three digits, whose extra digits are zeros
+    static constexpr std::uint64_t widen[] = {1000, 100, 10, 1};
+    const char* t = triple(v * widen[n]);
+    std::memcpy(start, t, 4);
+    return 3 - (t[3] & 3);
+  }
+  for (char* p = start + n; p != start; v /= 10) *--p = static_cast<char>('0' + v % 10);
+  int kept = n;
+  while (kept > 0 && start[kept - 1] == '0') --kept;
+  return kept;
+}
+
+char* fill(char* p, int count, char c) {
+  if (count > 0) {
+    std::memset(p, c, static_cast<std::size_t>(count));
+    p += count;
+  }
+  return p;
+}
+
+// Lays out the number part for the rounded value units * 10^-N (N <= 15), exactly as the exact
+// printer does. Returns the end, or nullptr when option d suppresses the item.
+char* write_units(char* p, const DisplayFormat& f, std::uint64_t units, bool negative) {
+  if (units == 0 && f.delete_if_zero) return nullptr;
+  const int n = f.frac_digits;
+
+  std::uint64_t whole = units, fraction = 0;
+  if (n > 0) {
+    whole = units / powers_of_ten[n];
+    fraction = units - whole * powers_of_ten[n];
+  }
+  // Digits around a point at digits + 24: up to 20 integer digits before it, up to 15 fraction
+  // digits after it. The copies below move fixed sizes (a few register moves, no library call);
+  // bytes past the digits are scratch that later writes cover or the length leaves out.
+  char digits[48];
+  char* const point_at = digits + 24;
+  const int int_len = static_cast<int>(point_at - write_integer_digits(point_at, whole));
+  const int kept = write_fraction_digits(point_at, fraction, n);
+
+  if (f.plain) {  // the common shapes: [-] digits (a 0 if none) [. kept digits]
+    *p = '-';
+    p += negative ? 1 : 0;
+    *p = '0';
+    p += int_len == 0 ? 1 : 0;
+    std::memcpy(p, point_at - int_len, 20);
+    p += int_len;
+    if (kept == 0 && f.conditional_point) return p;
+    *p++ = '.';
+    std::memcpy(p, point_at, 16);
+    return p + kept;
+  }
+
+  // Fraction digits kept: trailing zeros go down to n (/n), unless 'z'; blanks replace them
+  // with a trailing blank; option p drops a zero fraction together with the point.
+  int frac_len = n;
+  int frac_blanks = 0;
+  bool point = !f.no_point;
+  if (f.trail != DisplayFormat::Pad::Zero || f.conditional_point) {
+    if (kept == 0 && f.conditional_point) {
+      point = false;
+      frac_len = 0;
+    } else if (f.trail != DisplayFormat::Pad::Zero) {
+      frac_len = kept > f.min_frac_digits ? kept : (f.min_frac_digits < n ? f.min_frac_digits : n);
+      if (f.trail == DisplayFormat::Pad::Blank) frac_blanks = n - frac_len;
+    }
+  }
+
+  int zeros = f.min_int_digits > int_len ? f.min_int_digits - int_len : 0;
+  if (int_len + zeros == 0 && frac_len == 0) zeros = 1;  // never a number without any digit
+  if (f.lead == DisplayFormat::Pad::Blank) p = fill(p, f.int_digits - (int_len + zeros), ' ');
+  if (negative)
+    *p++ = '-';
+  else if (f.sign == DisplayFormat::Sign::Always)
+    *p++ = '+';
+  if (f.lead == DisplayFormat::Pad::Zero) p = fill(p, f.int_digits - (int_len + zeros), '0');
+  p = fill(p, zeros, '0');
+  std::memcpy(p, point_at - int_len, 20);  // at most 20 integer digits (2^64)
+  p += int_len;
+  if (point) *p++ = '.';
+  std::memcpy(p, point_at, 16);  // at most 15 fraction digits
+  p += frac_len;
+  return fill(p, frac_blanks, ' ');
+}
+
+// The number part through the fast path; `handled` is false when the exact printer must decide.
+char* format_number(char* p, const DisplayFormat& f, const Value& v, bool& handled) {
+  const int n = f.frac_digits;
+  std::uint64_t units = 0;
+  bool negative = false;
+  handled = false;
+  if (formats_as_integer(f, v)) {  // integers and logicals: exact, no rounding
+    const std::int64_t i = integer_of(v);
+    const std::uint64_t magnitude = i < 0 ? 0 - static_cast<std::uint64_t>(i) : static_cast<std::uint64_t>(i);
+    if (n <= max_fast_fraction && magnitude <= UINT64_MAX / powers_of_ten[n]) {
+      handled = true;
+      units = magnitude * powers_of_ten[n];
+    }
+    negative = (i < 0) != f.invert && i != 0;
+  } else {
+    const double x = scaled_number(f, v);
+    handled = n <= max_fast_fraction && fast::round_to_units(std::fabs(x), n, units);
+    negative = x < 0 && units != 0;  // a value that rounds to zero has no sign
+  }
+  return handled ? write_units(p, f, units, negative) : p;
+}
+
+}  // namespace
+
+constexpr std::size_t short_item = 32;
+
+void append_formatted(std::string& out, const DisplayFormat& f, const Value& v) {
+  if (v.type == Type::String) {
+    out += v.text;
+    return;
+  }
+  // Affixes are copied whole (a fixed-size copy is a few moves; the length decides what counts).
+  char buf[DisplayFormat::max_affix + exact::max_number + DisplayFormat::max_affix];
+  std::memcpy(buf, f.prefix.data(), DisplayFormat::max_affix);
+  char* p = buf + f.prefix_length;
+  bool handled = false;
+  p = format_number(p, f, v, handled);
+  if (!handled) p = exact::format_number(p, f, v, exact::Digits::Quick);
+  if (p == nullptr) return;  // option d: not even the affixes
+  std::memcpy(p, f.postfix.data(), DisplayFormat::max_affix);
+  p += f.postfix_length;
+  const auto length = static_cast<std::size_t>(p - buf);
+  if (length <= short_item) {
+    // A constant-size append compiles to a few moves instead of a memcpy call; the extra bytes
+    // are cut off again at once.
+    const std::size_t before = out.size();
+    out.append(buf, short_item);
+    out.resize(before + length);
+  } else {
+    out.append(buf, length);
+  }
+}
+
+std::string format_value(const DisplayFormat& f, const Value& v) {
+  std::string s;
+  append_formatted(s, f, v);
+  return s;
+}
+
+}  // namespace gppl

@@ -1,0 +1,299 @@
+#include "prp/filters/arc_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace prp {
+
+using toolpath::geometry::Arc;
+using toolpath::geometry::Direction;
+using toolpath::geometry::Plane;
+
+namespace {
+
+// The parameters the filter reads, found in one pass over a command's parameters (the first of
+// each name, as with Command::find): what plan() needs of an arc, the tool position and apos/bpos
+// it follows on every command, and whether a move names a set end point (for SetHistory).
+enum ArcField { kX, kY, kZ, kApos, kBpos, kXcenter, kYcenter, kXrel, kYrel, kZstart, kSize, kPlane, kDirection,
+                kPlaneM, kFieldCount };
+
+using toolpath::ParamKey;
+
+// Per key: 1 + its ArcField, kSetEndPoint for a set end point, 0 for anything else.
+constexpr std::uint8_t kSetEndPoint = kFieldCount + 1;
+constexpr auto kCodes = [] {
+  KeyTable<std::uint8_t> t{};
+  const std::pair<ParamKey, ArcField> fields[] = {
+      {ParamKey::xpos, kX},          {ParamKey::ypos, kY},
+      {ParamKey::zpos, kZ},          {ParamKey::apos, kApos},
+      {ParamKey::bpos, kBpos},       {ParamKey::xcenter, kXcenter},
+      {ParamKey::ycenter, kYcenter}, {ParamKey::xcenter_rel, kXrel},
+      {ParamKey::ycenter_rel, kYrel}, {ParamKey::zstart, kZstart},
+      {ParamKey::arc_size, kSize},   {ParamKey::arc_plane, kPlane},
+      {ParamKey::arc_direction, kDirection}, {ParamKey::arc_plane_m, kPlaneM}};
+  for (auto [key, field] : fields) at(t, key) = static_cast<std::uint8_t>(1 + field);
+  for (ParamKey key : kSetEndPoints) at(t, key) = kSetEndPoint;
+  return t;
+}();
+
+}  // namespace
+
+struct ArcFilter::Fields {
+  explicit Fields(const toolpath::Command& c) {
+    for (const toolpath::Parameter& p : c.parameters) {
+      const int code = at(kCodes, p.key);
+      if (code == 0) continue;
+      if (code == kSetEndPoint) names_set_end_point = true;
+      else if (!values[code - 1]) values[code - 1] = &p.value;
+    }
+  }
+  const toolpath::Value* find(ArcField f) const { return values[f]; }
+  // As prp::number().
+  std::optional<double> number(ArcField f) const {
+    const toolpath::Value* v = values[f];
+    if (!v || !is_number(*v)) return std::nullopt;
+    return number_of(*v);
+  }
+  const toolpath::Value* values[kFieldCount] = {};
+  bool names_set_end_point = false;
+};
+
+ArcSettings ArcSettings::from(const MachineParameters& p) {
+  ArcSettings s;
+  s.arc_exist = p.logical("arc_exist");
+  s.arc_3d = p.logical("arc_3d");
+  s.quadrants = p.logical("arc_quadrants");
+  s.gt_180 = p.logical("arc_gt_180");
+  s.zx_yz = p.logical("arc_zx_yz");
+  s.arc_5x = p.logical("arc_5x");
+  // The engine default of arc_in_main_planes (Y) must not change a stream, so only a PRP that says
+  // it (or pos_to_coord = Y) makes tilted machine-plane arcs into chords.
+  s.main_planes = (p.has("arc_in_main_planes") && p.logical("arc_in_main_planes")) || p.logical("pos_to_coord");
+  s.machine_plane = toolpath::geometry::parse_plane(p.text("machine_plane")).value_or(Plane::XY);
+  if (p.has("arc_max_radius")) s.max_radius = p.numeric("arc_max_radius");
+  s.max_angle = p.numeric("arc_max_angle");
+  s.max_chord = p.numeric("arc_max_chord");
+  if (p.has("arc_max_deviation")) s.max_deviation = p.numeric("arc_max_deviation");
+  s.min_length = p.numeric("arc_min_length");
+  s.eps_angle = p.numeric("eps_angle");
+  s.zero_value = p.numeric("zero_value");
+  s.limits_defaulted = !p.has("arc_max_angle") && !p.has("arc_max_chord") && !p.has("arc_max_deviation");
+  return s;
+}
+
+bool ArcSettings::passes_everything() const {
+  return arc_exist && arc_3d && !quadrants && gt_180 && zx_yz && arc_5x && !main_planes && !max_radius &&
+         min_length <= 0 && eps_angle <= 0;
+}
+
+ArcFilter::ArcFilter(toolpath::CommandSource& input, ArcSettings settings, WarningSink warn)
+    : input_(input), settings_(settings), warn_(std::move(warn)) {}
+
+bool ArcFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  if (piece_ < pieces_) {
+    emit(out, kind);
+    return true;
+  }
+  if (!input_.next(out, kind)) return false;
+  if (!out.is_stream_command()) return true;  // followed by nothing here, the set history included
+  const Fields f(out);
+  if (kind == CommandKind::arc || kind == CommandKind::arc_5x) {
+    plan(out, kind, f);
+    if (pieces_ > 0) {
+      sets_.prepare(out, arc_, history_);
+      history_.observe(out, kind);
+      swap(original_, out);
+      emit(out, kind);
+      return true;
+    }
+  }
+  follow(out, kind, f);
+  return true;
+}
+
+// Follows a stream command: the tool position (moves only, as ToolPosition::update), apos/bpos
+// (any command) and the kinematic-set history.
+void ArcFilter::follow(const toolpath::Command& out, CommandKind kind, const Fields& f) {
+  const bool moves = has(kMovesTool, kind);
+  if (!moves || f.names_set_end_point) history_.observe(out, kind);
+  if (moves)
+    for (int i = 0; i < 3; ++i)
+      if (const toolpath::Value* v = f.values[kX + i]; v && is_number(*v)) position_.set_axis(i, number_of(*v));
+  if (const toolpath::Value* v = f.values[kApos]; v && is_number(*v)) apos_ = number_of(*v);
+  if (const toolpath::Value* v = f.values[kBpos]; v && is_number(*v)) bpos_ = number_of(*v);
+}
+
+// Decides what replaces the arc (spec 3.2 process_arc); pieces_ stays 0 when it passes unchanged.
+void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Fields& f) {
+  piece_ = pieces_ = chords_ = 0;
+  cuts_.clear();
+  five_axis_ = kind == CommandKind::arc_5x;
+  rotary_from_[0] = apos_;
+  rotary_from_[1] = bpos_;
+  rotary_to_[0] = f.number(kApos);
+  rotary_to_[1] = f.number(kBpos);
+
+  Plane plane = Plane::XY;
+  if (const toolpath::Value* v = f.find(kPlane)) {
+    auto p = toolpath::geometry::parse_plane(v->text);
+    if (!p) throw StreamError(c, fmt::format("arc_plane `{}` is none of XY, YZ, ZX", v->text));
+    plane = *p;
+  }
+  const toolpath::Value* dir = f.find(kDirection);
+  if (!dir || !(toolpath::iequals(dir->text, "CW") || toolpath::iequals(dir->text, "CCW")))
+    throw StreamError(c, "expected arc_direction CW or CCW");
+  const Direction direction = toolpath::iequals(dir->text, "CW") ? Direction::CW : Direction::CCW;
+  const auto a = toolpath::geometry::axes(plane);
+
+  // End point: missing coordinates stay where the tool is.
+  static constexpr std::string_view pos_names[] = {"xpos", "ypos", "zpos"};
+  Eigen::Vector3d end;
+  for (int i = 0; i < 3; ++i) {
+    auto v = f.number(static_cast<ArcField>(kX + i));
+    if (!v) v = position_.axis(i);
+    if (!v) throw StreamError(c, fmt::format("the arc has no {} and the tool position is unknown", pos_names[i]));
+    end[i] = *v;
+  }
+  // Centre and start in the arc plane: xcenter/ycenter and the *_rel values are the plane's first
+  // and second coordinates (XY: x y, YZ: y z, ZX: z x).
+  auto cx = f.number(kXcenter), cy = f.number(kYcenter);
+  auto rx = f.number(kXrel), ry = f.number(kYrel);
+  Eigen::Vector3d start, centre;
+  for (int k = 0; k < 2; ++k) {
+    const int axis = k == 0 ? a.first : a.second;
+    auto cen = k == 0 ? cx : cy;
+    auto rel = k == 0 ? rx : ry;
+    auto here = position_.axis(axis);
+    if (!cen && rel && here) cen = *here + *rel;
+    if (!cen) throw StreamError(c, "the arc has no centre (xcenter/ycenter, or xcenter_rel/ycenter_rel)");
+    centre[axis] = *cen;
+    start[axis] = rel ? *cen - *rel : here.value_or(*cen);
+    if (!rel && !here) throw StreamError(c, "the arc's start is unknown (no xcenter_rel/ycenter_rel)");
+  }
+  auto zstart = plane == Plane::XY ? f.number(kZstart) : std::nullopt;
+  start[a.normal] = zstart ? *zstart : position_.axis(a.normal).value_or(end[a.normal]);
+  centre[a.normal] = start[a.normal];
+
+  bool tilted = false;  // in the machine's axes the arc lies in none of XY, YZ, ZX
+  if (const toolpath::Value* m = f.find(kPlaneM)) tilted = !toolpath::geometry::parse_plane(m->text);
+  if (!settings_.work_out_every_arc &&
+      arc_surely_passes(settings_, start, end, centre, plane, direction, five_axis_, tilted))
+    return;
+
+  arc_ = toolpath::geometry::make_arc(start, end, centre, plane, direction, f.number(kSize));
+  const ArcSettings& s = settings_;
+  const bool helical = std::abs(arc_.rise()) > std::max(s.zero_value, 1e-9);
+  const bool in_machine_plane = plane == s.machine_plane;
+
+  if (arc_.sweep < s.eps_angle || arc_.length() < s.min_length) {
+    chords_ = pieces_ = 1;  // one straight line to the end
+    return;
+  }
+  if (!s.arc_exist || (helical && !s.arc_3d) || (!in_machine_plane && !s.zx_yz) ||
+      (s.max_radius && arc_.radius > *s.max_radius) || (five_axis_ && !s.arc_5x) || (tilted && s.main_planes)) {
+    chords_ = pieces_ = toolpath::geometry::chord_count(arc_, s.max_angle, s.max_chord, s.max_deviation);
+    if (settings_.limits_defaulted && warn_) {
+      warn_(c, "arcs are linearised but the PRP sets neither arc_max_angle nor arc_max_chord: using 10 degrees "
+               "and 30 mm / 1.1811 inch");
+      settings_.limits_defaulted = false;  // once
+    }
+    return;
+  }
+  std::vector<double> inner;
+  // A cut that would leave a piece below eps_angle, or shorter than zero_value, is not made: that
+  // sliver is rounding in the toolpath (an arc starting at 180.002 degrees), not a real crossing.
+  const double sliver = std::max({1e-6, s.eps_angle, s.zero_value / arc_.radius * 180.0 / std::numbers::pi});
+  if (s.quadrants) inner = toolpath::geometry::quadrant_crossings(arc_, sliver);
+  else if (!s.gt_180 && arc_.sweep > 180.0 + 1e-9) inner = {arc_.sweep / 2.0};
+  if (inner.empty()) return;  // the arc passes unchanged
+  cuts_.push_back(0.0);
+  cuts_.insert(cuts_.end(), inner.begin(), inner.end());
+  cuts_.push_back(arc_.sweep);
+  pieces_ = static_cast<int>(cuts_.size()) - 1;
+}
+
+// Told without make_arc's atan2, fmod and hypot. The switches that could change an arc are off, or
+// settled by the exact expressions plan() uses; the sweep and the radius are bounded from products
+// of the coordinates. Their rounding errors (a few units in the last place: 1e-13 degrees, 1e-15
+// of the radius) are far below the margins (1e-9), and an arc near 0, 180 or 360 degrees, or of a
+// radius below 1e-50 or above 1e50, is worked out in full. NaN fails every comparison here, so it
+// is worked out too.
+bool arc_surely_passes(const ArcSettings& s, const Eigen::Vector3d& start, const Eigen::Vector3d& end,
+                       const Eigen::Vector3d& centre, Plane plane, Direction direction, bool five_axis, bool tilted) {
+  if (!s.arc_exist || s.quadrants || (five_axis && !s.arc_5x) || (tilted && s.main_planes) ||
+      (plane != s.machine_plane && !s.zx_yz))
+    return false;
+  const auto a = toolpath::geometry::axes(plane);
+  if (!s.arc_3d && std::abs(end[a.normal] - start[a.normal]) > std::max(s.zero_value, 1e-9)) return false;  // helical
+  // In the arc plane, from the centre: u to the start, v to the end.
+  const double ux = start[a.first] - centre[a.first], uy = start[a.second] - centre[a.second];
+  const double vx = end[a.first] - centre[a.first], vy = end[a.second] - centre[a.second];
+  const double u2 = ux * ux + uy * uy, v2 = vx * vx + vy * vy;
+  if (!(u2 > 1e-100 && u2 < 1e100 && v2 > 1e-100 && v2 < 1e100)) return false;
+  const double n = std::sqrt(u2) * std::sqrt(v2);
+  // n sin(sweep): positive for a sweep below 180 degrees in the arc's direction.
+  const double turn = direction == Direction::CCW ? ux * vy - uy * vx : uy * vx - ux * vy;
+  constexpr double kMargin = 1e-9;
+  double low;  // the sweep is at least this (degrees)
+  if (turn > kMargin * n) {
+    // 0 < sweep < 180: at least 90 when the dot product is not positive, else at least its sine (radians).
+    low = ux * vx + uy * vy <= 0 ? 90.0 : turn / n * (180.0 / std::numbers::pi);
+  } else if (turn < -kMargin * n && s.gt_180) {
+    low = 180.0;  // 180 < sweep < 360, which only gt_180 = N would cut
+  } else {
+    return false;
+  }
+  low = low * (1 - kMargin) - kMargin;
+  if (!(low > s.eps_angle)) return false;                             // plan(): one line below eps_angle
+  const double radius = std::sqrt(u2);                                // hypot(ux, uy), within 1e-15
+  if (s.max_radius && !(radius * (1 + kMargin) <= *s.max_radius)) return false;  // chords above the limit
+  // length() is at least the radius times the sweep in radians (its helical part only adds).
+  return s.min_length <= 0 || radius * low * (std::numbers::pi / 180.0) * (1 - kMargin) > s.min_length;
+}
+
+// Hands out the next piece and its kind: a chord is a @line (@line_5x), a smaller arc keeps the
+// original's name.
+void ArcFilter::emit(toolpath::Command& out, CommandKind& kind) {
+  const int i = piece_++;
+  const bool last = piece_ == pieces_;
+  const double to = chords_ > 0 ? (last ? arc_.sweep : arc_.sweep * (i + 1) / chords_)
+                                : cuts_[static_cast<std::size_t>(i) + 1];
+  const Arc piece = arc_.piece(chords_ > 0 ? arc_.sweep * i / chords_ : cuts_[static_cast<std::size_t>(i)], to);
+  const bool as_line = chords_ > 0 || piece.sweep < settings_.eps_angle || piece.length() < settings_.min_length;
+  if (as_line) {
+    make_motion(out, five_axis_ ? "@line_5x" : "@line", original_, piece.end, number(original_, ParamKey::feed));
+    kind = five_axis_ ? CommandKind::line_5x : CommandKind::line;
+    sets_.write_vertex(out, piece.end, last);
+  } else {
+    out = original_;
+    out.trace.clear();
+    kind = five_axis_ ? CommandKind::arc_5x : CommandKind::arc;
+    const auto a = toolpath::geometry::axes(piece.plane);
+    set_point(out, piece.end);
+    set_number(out, ParamKey::xcenter_rel, piece.centre[a.first] - piece.start[a.first]);
+    set_number(out, ParamKey::ycenter_rel, piece.centre[a.second] - piece.start[a.second]);
+    set_number(out, ParamKey::start_angle, piece.start_angle());
+    set_number(out, ParamKey::end_angle, piece.end_angle());
+    set_number(out, ParamKey::arc_size, piece.sweep);
+    if (out.find(ParamKey::zstart)) set_number(out, ParamKey::zstart, piece.start.z());
+    sets_.write_piece(out, piece, i == 0, last);
+  }
+  if (five_axis_) {
+    // The rotary axes turn in step with the arc angle, from where the previous command left them.
+    static constexpr ParamKey names[] = {ParamKey::apos, ParamKey::bpos};
+    for (int k = 0; k < 2; ++k) {
+      const auto& from = rotary_from_[k];
+      const auto& end = rotary_to_[k];
+      if (!end) continue;
+      set_number(out, names[k], last || !from ? *end : *from + (*end - *from) * (to / arc_.sweep));
+    }
+  }
+  if (last) out.trace = original_.trace;  // the original post's output belongs to the whole arc
+  follow(out, kind, Fields(out));
+}
+
+}  // namespace prp

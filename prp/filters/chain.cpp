@@ -1,0 +1,57 @@
+// The stream filters, wired in the order of spec 3.0: structure (checks, drill expansion, default
+// positions), then geometry (short lines, arcs, zero snapping and precision).
+#include <vector>
+
+#include "prp/filters/arc_filter.hpp"
+#include "prp/filters/compensation_check.hpp"
+#include "prp/filters/drill_expansion.hpp"
+#include "prp/filters/full_coordinates.hpp"
+#include "prp/filters/init_cpos.hpp"
+#include "prp/filters/mode_commands.hpp"
+#include "prp/filters/precision_filter.hpp"
+#include "prp/filters/procedure_generation.hpp"
+#include "prp/prp.hpp"
+#include "prp/filters/short_line_filter.hpp"
+#include "prp/filters/structure_check.hpp"
+
+namespace prp {
+namespace {
+
+// Owns the filters; pulls from the last one.
+class Chain final : public toolpath::CommandSource {
+public:
+  explicit Chain(toolpath::CommandSource& input) : last_(&input) {}
+  template <class Filter, class... Args>
+  void add(Args&&... args) {
+    auto filter = std::make_unique<Filter>(*last_, std::forward<Args>(args)...);
+    last_ = filter.get();
+    filters_.push_back(std::move(filter));
+  }
+  bool next(toolpath::Command& out) override { return last_->next(out); }
+
+private:
+  toolpath::CommandSource* last_;
+  std::vector<std::unique_ptr<toolpath::CommandSource>> filters_;
+};
+
+}  // namespace
+
+std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParameters& params,
+                                                            toolpath::CommandSource& input, WarningSink warn) {
+  auto chain = std::make_unique<Chain>(input);
+  chain->add<StructureCheck>(params, warn);
+  if (DrillExpansion::needed(params)) chain->add<DrillExpansion>(params, warn);
+  if (!ModeCommands::wanted(params).empty()) chain->add<ModeCommands>(params, warn);
+  if (params.logical("init_cpos")) chain->add<InitCpos>();
+  // After the filters that add commands to inline jobs, so that those commands travel with their job.
+  if (ProcedureGeneration::needed(params)) chain->add<ProcedureGeneration>(params);
+  if (params.has("dflt_start") || params.has("dflt_end")) chain->add<DefaultPositions>(params);
+  if (CompensationCheck::needed(params)) chain->add<CompensationCheck>(params.numeric("min_delt_arc_rad"), warn);
+  if (params.numeric("eps_line") > 0) chain->add<ShortLineFilter>(params.numeric("eps_line"));
+  if (auto arcs = ArcSettings::from(params); !arcs.passes_everything()) chain->add<ArcFilter>(arcs, warn);
+  if (auto precision = PrecisionSettings::from(params); !precision.does_nothing()) chain->add<PrecisionFilter>(precision);
+  if (params.logical("full_gcode")) chain->add<FullCoordinates>();
+  return chain;
+}
+
+}  // namespace prp

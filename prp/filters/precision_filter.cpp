@@ -1,0 +1,131 @@
+#include "prp/filters/precision_filter.hpp"
+
+#include <array>
+#include <cstdint>
+#include <cmath>
+#include <vector>
+
+namespace prp {
+namespace {
+
+using toolpath::ParamKey;
+
+// The parameters the filter touches: lengths (rounded with the coordinates; the first three are the
+// tool position), then the feed and the spindle speed.
+constexpr ParamKey kKeys[] = {ParamKey::xpos,          ParamKey::ypos,          ParamKey::zpos,
+                              ParamKey::xcenter,       ParamKey::ycenter,       ParamKey::xcenter_rel,
+                              ParamKey::ycenter_rel,   ParamKey::radius,        ParamKey::zstart,
+                              ParamKey::drill_upper_z, ParamKey::drill_lower_z, ParamKey::drill_clearance_z,
+                              ParamKey::drill_depth,   ParamKey::down_step,     ParamKey::feed,
+                              ParamKey::spin};
+constexpr int kFeed = 14, kSpin = 15;
+
+// Which of kKeys a parameter is, or -1: every parameter of every command is looked up.
+constexpr auto kIndex = [] {
+  KeyTable<std::int8_t> t{};
+  t.fill(-1);
+  for (int k = 0; k < static_cast<int>(std::size(kKeys)); ++k) at(t, kKeys[k]) = static_cast<std::int8_t>(k);
+  return t;
+}();
+
+std::optional<DecimalGrid> grid_of(const std::optional<int>& digits) {
+  if (!digits) return std::nullopt;
+  return DecimalGrid(*digits);
+}
+
+}  // namespace
+
+// Why a whole number v with |v| <= whole_limit_ rounds to itself (-0 to +0) under the general rule:
+// 10^digits is a double exactly for 0 <= digits <= 22, and whole_limit_ * 10^digits <= 2^53, so
+// v * 10^digits is a whole number of at most 2^53: a double, so the product is exact. Rounding a
+// whole number changes nothing, and dividing it by 10^digits gives v exactly, a double, so the
+// quotient is exact as well; the rule's last step makes -0 into +0. Any other value (a fraction,
+// a larger number, inf, NaN, or digits < 0, where 10^digits is not a double) takes the general rule.
+DecimalGrid::DecimalGrid(int digits) : scale_(std::pow(10.0, digits)), whole_limit_(-1.0) {
+  if (digits < 0 || digits > 22) return;
+  double exact = 1.0;
+  std::uint64_t power = 1;  // 10^digits while it stays below 2^53, else 0
+  for (int i = 0; i < digits; ++i) {
+    exact *= 10.0;  // exact up to 10^22
+    power = power != 0 && power * 10 <= (std::uint64_t{1} << 53) ? power * 10 : 0;
+  }
+  if (exact != scale_) return;  // pow() was not exact: no shortcut
+  whole_limit_ = power == 0 ? 0.0 : static_cast<double>((std::uint64_t{1} << 53) / power);
+}
+
+double DecimalGrid::round_general(double v) const {
+  const double r = round_half_away(v * scale_) / scale_;
+  return r == 0.0 ? 0.0 : r;  // never -0
+}
+
+double round_half_away(double y) {
+  if (!(std::abs(y) < 4503599627370496.0)) return y;  // 2^52: already whole (or inf, NaN)
+  double t = static_cast<double>(static_cast<std::int64_t>(y));  // towards zero
+  const double fraction = y - t;                                   // exact
+  if (fraction >= 0.5) t += 1.0;
+  else if (fraction <= -0.5) t -= 1.0;
+  return t;
+}
+
+std::optional<int> digits_of(double v) {
+  if (v >= 1.0) return static_cast<int>(std::lround(v));
+  if (v > 0.0) return static_cast<int>(std::lround(-std::log10(v)));
+  return std::nullopt;
+}
+
+PrecisionSettings PrecisionSettings::from(const MachineParameters& p) {
+  PrecisionSettings s;
+  s.zero_value = p.numeric("zero_value");
+  if (p.has("movement_precision")) s.movement_digits = digits_of(p.numeric("movement_precision"));
+  if (p.has("feed_precision")) s.feed_digits = static_cast<int>(p.integer("feed_precision"));
+  if (p.has("spin_precision")) s.spin_digits = static_cast<int>(p.integer("spin_precision"));
+  return s;
+}
+
+PrecisionFilter::PrecisionFilter(toolpath::CommandSource& input, PrecisionSettings settings)
+    : input_(input),
+      s_(settings),
+      movement_(grid_of(s_.movement_digits)),
+      feed_(grid_of(s_.feed_digits)),
+      spin_(grid_of(s_.spin_digits)) {}
+
+// One pass over the parameters. For each one the steps run in the order of spec 3.1: snap to zero,
+// keep an axis that barely moved, round. Values already at the precision stay as they are (an
+// integer stays an integer); a changed value becomes numeric and keeps its change flag.
+bool PrecisionFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  if (!input_.next(out, kind)) return false;
+  if (!out.is_stream_command()) return true;
+  const double zero = s_.zero_value;
+  const bool moves = has(kMovesTool, kind);
+  const bool snap_axes = zero > 0 && moves;
+  unsigned seen = 0;  // a name given twice: only its first occurrence counts, as with Command::find
+  for (toolpath::Parameter& p : out.parameters) {
+    const int k = at(kIndex, p.key);
+    if (k < 0 || (seen & (1u << k))) continue;
+    seen |= 1u << k;
+    toolpath::Value& v = p.value;
+    if (!is_number(v)) continue;
+    double x = number_of(v);
+    bool changed = false;
+    auto set = [&](double r) {
+      if (r != x) x = r, changed = true;
+    };
+    if (k < kFeed) {
+      if (zero > 0 && x != 0.0 && std::abs(x) < zero) set(0.0);
+      if (snap_axes && k < 3) {
+        auto last = sent_.axis(k);
+        if (last && x != *last && std::abs(x - *last) < zero) set(*last);
+      }
+      if (movement_) set(movement_->round(x));
+    } else if (k == kFeed && feed_) {
+      set(feed_->round(x));
+    } else if (k == kSpin && spin_) {
+      set(spin_->round(x));
+    }
+    if (changed) v = toolpath::Value::make_numeric(x, v.flag);
+    if (moves && k < 3) sent_.set_axis(k, x);  // where the tool is sent (ToolPosition::update, in this pass)
+  }
+  return true;
+}
+
+}  // namespace prp

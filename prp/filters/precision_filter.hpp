@@ -1,0 +1,61 @@
+// Zero snapping and precision rounding (spec 3.1), the last geometric stage: a coordinate closer
+// than `zero_value` to 0 becomes 0; an axis that moves less than `zero_value` keeps its previous
+// value; coordinates, feeds and spindle speeds are rounded to the PRP's digits.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+
+#include "prp/filters/kind_source.hpp"
+#include "prp/filters/motion.hpp"
+#include "prp/prp.hpp"
+
+namespace prp {
+
+struct PrecisionSettings {
+  double zero_value = 0.0;
+  std::optional<int> movement_digits, feed_digits, spin_digits;
+
+  static PrecisionSettings from(const MachineParameters& params);
+  bool does_nothing() const { return zero_value <= 0 && !movement_digits && !feed_digits && !spin_digits; }
+};
+
+// movement_precision as written (spec 3.1): a whole number >= 1 is a digit count, 0 < v < 1 a step
+// (0.001: 3 digits), 0 no rounding.
+std::optional<int> digits_of(double movement_precision);
+
+// std::round (halves away from zero) without the library call, for every double (inf and NaN too);
+// the zero it gives for -0.4 may be +0 where std::round gives -0 (rounding writes no -0 anyway).
+double round_half_away(double y);
+
+// Rounding to a number of decimals (spec 3.1): round_half_away(v * 10^digits) / 10^digits, never
+// -0. round() gives the general rule's result, bit for bit, for every double; whole numbers (most
+// coordinates, feeds and speeds) skip the arithmetic (see precision_filter.cpp for why that is exact).
+class DecimalGrid {
+public:
+  explicit DecimalGrid(int digits);
+  double round(double v) const {
+    if (std::abs(v) <= whole_limit_ && static_cast<double>(static_cast<std::int64_t>(v)) == v) return v == 0.0 ? 0.0 : v;
+    return round_general(v);
+  }
+  double round_general(double v) const;  // the rule as written
+
+private:
+  double scale_;        // 10^digits
+  double whole_limit_;  // whole numbers up to this stay as they are; -1: no shortcut
+};
+
+class PrecisionFilter final : public KindSource {
+public:
+  PrecisionFilter(toolpath::CommandSource& input, PrecisionSettings settings);
+  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
+
+private:
+  KindedInput input_;
+  PrecisionSettings s_;
+  std::optional<DecimalGrid> movement_, feed_, spin_;
+  ToolPosition sent_;
+};
+
+}  // namespace prp

@@ -1,0 +1,364 @@
+#include "prp/filters/procedure_generation.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "prp/filters/motion.hpp"
+
+namespace prp {
+namespace {
+
+// A stand-in for a job in the main-program spool; its index is the job's number.
+constexpr const char* kJobMarker = "\x01job";
+
+using K = CommandKind;
+constexpr KindSet kStructure =
+    bit(K::proc) | bit(K::end_proc) | bit(K::call_proc) | bit(K::call_prms) | bit(K::loop) | bit(K::end_loop);
+constexpr KindSet kToolChange = bit(K::change_tool) | bit(K::turn_change_tool) | bit(K::chng_tool_cnext);
+
+void mix(std::uint64_t& hash, double v) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &v, 8);
+  for (int i = 0; i < 8; ++i) {
+    hash ^= (bits >> (8 * i)) & 0xffu;
+    hash *= 1099511628211u;  // FNV-1a
+  }
+}
+
+// A procedure body runs after the main program has changed to later tools, so its @start_of_job
+// names the job's own tool (a parameter @start_of_job has, gpptool 6.1) when the toolpath left it out.
+void add_tool_number(toolpath::Command& start, const auto& job) {
+  if (job.tool_number && !start.find("tool_number")) start.set("tool_number", *job.tool_number);
+}
+
+}  // namespace
+
+bool ProcedureGeneration::needed(const MachineParameters& params) {
+  const std::string& g = params.text("gen_procs");
+  return toolpath::iequals(g, "Y") || toolpath::iequals(g, "C");
+}
+
+ProcedureGeneration::ProcedureGeneration(toolpath::CommandSource& input, const MachineParameters& params)
+    : input_(input),
+      mode_(params.text("gen_procs")),
+      drill_proc_(params.logical("drill_proc")),
+      range_(procedure_numbers(params)),
+      first_label_(range_.dflt.value_or(range_.min.value_or(1))) {}
+
+bool ProcedureGeneration::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  if (phase_ == Phase::PassThrough && !main_ && !has_held_) return input_.next(out, kind);
+  if (!produce(out)) return false;
+  kind = command_kind(out);
+  return true;
+}
+
+bool ProcedureGeneration::produce(toolpath::Command& out) {
+  if (phase_ == Phase::Collect) phase_ = collect() ? Phase::Main : Phase::PassThrough;
+  switch (phase_) {
+    case Phase::PassThrough: {
+      if (main_ && main_->read(out)) return true;
+      main_.reset();
+      if (has_held_) {
+        has_held_ = false;
+        swap(out, held_);
+        return true;
+      }
+      CommandKind kind;
+      return input_.next(out, kind);
+    }
+    case Phase::Main: return next_main(out);
+    case Phase::Body: return next_body(out);
+    case Phase::Points: return next_points(out);
+    default: return false;
+  }
+}
+
+bool ProcedureGeneration::collect() {
+  main_.emplace();
+  bodies_.emplace();
+  toolpath::Command c;
+  bool in_job = false, leading = false, in_cycle = false;
+  Job job;
+  Cycle cycle;
+  K kind;
+  while (input_.next(c, kind)) {
+    if (c.is_stream_command() && has(kStructure, kind)) {
+      if (jobs_.empty() && !in_job) {  // a structured toolpath: hand it on as it is
+        swap(held_, c);
+        has_held_ = true;
+        main_->seek(0);
+        bodies_.reset();
+        return false;
+      }
+      throw StreamError(c, "the toolpath mixes inline jobs with procedures or loops, so gen_procs cannot "
+                           "restructure it");
+    }
+    if (!in_job) {
+      if (c.is_stream_command() && kind == K::start_of_job) {
+        job = Job{};
+        job.index = c.index;
+        job.offset = bodies_->write(c);
+        job.first_cycle = cycles_.size();
+        toolpath::Command marker;
+        marker.name = kJobMarker;
+        marker.index = jobs_.size();
+        main_->write(marker);
+        in_job = leading = true;
+      } else {
+        main_->write(c);
+      }
+      continue;
+    }
+    const std::int64_t at = bodies_->write(c);
+    if (!c.is_stream_command()) continue;
+    if (leading && has(kToolChange, kind)) {
+      ++job.tools;
+      if (const toolpath::Value* t = c.find("tool_number"); t && !job.tool_number) job.tool_number = *t;
+      continue;
+    }
+    leading = false;
+    if (kind == K::drill) {
+      cycle = Cycle{};
+      cycle.index = c.index;
+      cycle.hash = 14695981039346656037u;
+      in_cycle = true;
+    } else if (in_cycle && kind == K::drill_point) {
+      if (cycle.points++ == 0) cycle.points_offset = at;
+      for (const char* axis : {"xpos", "ypos", "zpos"}) mix(cycle.hash, number(c, axis).value_or(0.0));
+    } else if (in_cycle && kind == K::end_drill) {
+      in_cycle = false;
+      mix(cycle.hash, static_cast<double>(cycle.points));
+      cycles_.push_back(cycle);
+      ++job.cycles;
+    } else if (kind == K::end_of_job) {
+      in_cycle = false;  // a cycle without @end_drill is never shared
+      job.end = bodies_->end();
+      jobs_.push_back(job);
+      in_job = false;
+    }
+  }
+  if (in_job) {  // the input ended inside a job: the job ends there
+    job.end = bodies_->end();
+    jobs_.push_back(job);
+  }
+  assign_labels();
+  main_->seek(0);
+  return true;
+}
+
+void ProcedureGeneration::assign_labels() {
+  std::map<std::pair<std::uint64_t, std::size_t>, std::vector<std::size_t>> lists;
+  if (drill_proc_)
+    for (std::size_t i = 0; i < cycles_.size(); ++i)
+      if (cycles_[i].points > 0) lists[{cycles_[i].hash, cycles_[i].points}].push_back(i);
+  for (auto& [key, owners] : lists)
+    if (owners.size() > 1) shared_.push_back(owners.front());
+  std::sort(shared_.begin(), shared_.end());
+
+  std::int64_t label = first_label_;
+  auto take = [&](std::size_t index_for_errors) {
+    if (!range_.contains(label)) {
+      toolpath::Command at;
+      at.name = "@proc";
+      at.index = index_for_errors;
+      throw StreamError(at, fmt::format("procedure label {} is outside proc_num_min .. proc_num_max ({} .. {})", label,
+                                        range_.min.value_or(0), range_.max.value_or(0)));
+    }
+    return label++;
+  };
+  auto is_shared = [&](std::size_t c) {
+    return cycles_[c].points > 0 && lists.count({cycles_[c].hash, cycles_[c].points}) &&
+           lists[{cycles_[c].hash, cycles_[c].points}].size() > 1;
+  };
+  for (std::size_t j = 0; j < jobs_.size(); ++j) {
+    bool calls = false;
+    for (std::size_t c = jobs_[j].first_cycle; c < jobs_[j].first_cycle + jobs_[j].cycles; ++c) calls |= is_shared(c);
+    if (toolpath::iequals(mode_, "Y") || !calls) jobs_[j].label = take(jobs_[j].index);
+  }
+  for (std::size_t owner : shared_) {
+    const std::int64_t l = take(cycles_[owner].index);
+    for (std::size_t c : lists[{cycles_[owner].hash, cycles_[owner].points}]) cycles_[c].label = l;
+  }
+  last_label_ = label - 1;
+}
+
+void ProcedureGeneration::call(toolpath::Command& out, std::int64_t label, const toolpath::Command* job) {
+  if (job) {
+    out = *job;  // a job's call carries the job's parameters (gpptool 2.8)
+    out.trace.clear();
+    if (const toolpath::Value* name = job->find("job_name")) out.set("message", toolpath::Value::make_string(name->text));
+  } else {
+    out.clear();
+  }
+  out.name = "@call_proc";
+  out.depth = 1;
+  out.set("label", toolpath::Value::make_integer(label));
+  out.set("proc_count", toolpath::Value::make_integer(1));
+}
+
+void ProcedureGeneration::bracket(toolpath::Command& out, const char* name, std::int64_t label,
+                                  std::optional<bool> end_of_job, std::size_t index) {
+  out.clear();
+  out.name = name;
+  out.index = index;
+  out.set("label", toolpath::Value::make_integer(label));
+  if (end_of_job) out.set("end_of_job", toolpath::Value::make_logical(*end_of_job));
+}
+
+bool ProcedureGeneration::next_main(toolpath::Command& out) {
+  if (!queue_.empty()) {
+    swap(out, queue_.front());
+    queue_.pop_front();
+    return true;
+  }
+  if (!main_->read(out)) {
+    if (bodies_sent_ || !start_next_procedure()) {
+      phase_ = Phase::Done;
+      return false;
+    }
+    return produce(out);
+  }
+  if (out.name == kJobMarker) {
+    const Job& job = jobs_[out.index];
+    bodies_->seek(job.offset);
+    if (!job.label) {  // stays inline (gen_procs = C and it calls a shared point list)
+      body_inline_ = true;
+      body_job_ = out.index;
+      cycle_ = job.first_cycle;
+      skip_tools_ = 0;
+      phase_ = Phase::Body;
+      return next_body(out);
+    }
+    toolpath::Command start;
+    bodies_->read(start);
+    add_tool_number(start, job);
+    for (int i = 0; i < job.tools; ++i) {
+      queue_.emplace_back();
+      bodies_->read(queue_.back());
+    }
+    queue_.emplace_back();
+    call(queue_.back(), *job.label, &start);
+    return next_main(out);
+  }
+  const K kind = out.is_stream_command() ? command_kind(out) : K::other;
+  if (kind == K::start_of_file && last_label_ >= first_label_) {
+    out.set("first_proc_number", toolpath::Value::make_integer(first_label_));
+    out.set("last_proc_number", toolpath::Value::make_integer(last_label_));
+    out.set("first_user_proc", toolpath::Value::make_integer(last_label_ + 1));
+  }
+  if (kind == K::end_of_file && !bodies_sent_) {
+    swap(end_of_file_, out);
+    has_end_of_file_ = true;
+    if (start_next_procedure()) return produce(out);
+    swap(out, end_of_file_);
+    has_end_of_file_ = false;
+  }
+  return true;
+}
+
+// Queues the @proc of the next procedure body and switches to sending it; false when all are sent
+// (the held @end_of_file, if any, is then queued and the main program resumes).
+bool ProcedureGeneration::start_next_procedure() {
+  while (next_proc_ < jobs_.size() && !jobs_[next_proc_].label) ++next_proc_;
+  if (next_proc_ < jobs_.size()) {
+    const Job& job = jobs_[next_proc_];
+    body_inline_ = false;
+    body_job_ = next_proc_++;
+    cycle_ = job.first_cycle;
+    skip_tools_ = -1;  // set once the @start_of_job is read
+    bodies_->seek(job.offset);
+    queue_.emplace_back();
+    bracket(queue_.back(), "@proc", *job.label, std::nullopt, job.index);
+    phase_ = Phase::Body;
+    return true;
+  }
+  const std::size_t list = next_proc_ - jobs_.size();
+  if (list < shared_.size()) {
+    const Cycle& cycle = cycles_[shared_[list]];
+    ++next_proc_;
+    bodies_->seek(cycle.points_offset);
+    queue_.emplace_back();
+    bracket(queue_.back(), "@proc", *cycle.label, std::nullopt, cycle.index);
+    phase_ = Phase::Points;
+    return true;
+  }
+  bodies_sent_ = true;
+  phase_ = Phase::Main;
+  if (has_end_of_file_) {
+    queue_.push_back(std::move(end_of_file_));
+    has_end_of_file_ = false;
+  }
+  return !queue_.empty();
+}
+
+bool ProcedureGeneration::next_body(toolpath::Command& out) {
+  for (;;) {
+    if (!queue_.empty()) {
+      swap(out, queue_.front());
+      queue_.pop_front();
+      return true;
+    }
+    const Job& job = jobs_[body_job_];
+    if (bodies_->position() >= job.end || !bodies_->read(out)) {
+      if (body_inline_) {
+        phase_ = Phase::Main;
+        return next_main(out);
+      }
+      queue_.emplace_back();
+      bracket(queue_.back(), "@end_proc", *job.label, true, last_index_);
+      if (!start_next_procedure()) phase_ = Phase::Main;
+      continue;
+    }
+    last_index_ = out.index;
+    if (!out.is_stream_command()) return true;
+    if (skip_tools_ < 0) {  // the job's @start_of_job opens the body; its tool changes were sent in main
+      skip_tools_ = job.tools;
+      add_tool_number(out, job);
+      return true;
+    }
+    if (skip_tools_ > 0) {
+      --skip_tools_;
+      continue;
+    }
+    const K kind = command_kind(out);
+    if (skipping_points_) {
+      if (kind == K::end_drill) skipping_points_ = false;
+      if (kind == K::drill_point || kind == K::end_drill) continue;
+    }
+    if (kind == K::drill && cycle_ < job.first_cycle + job.cycles) {
+      const Cycle& cycle = cycles_[cycle_++];
+      if (cycle.label) {
+        queue_.emplace_back();
+        call(queue_.back(), *cycle.label, nullptr);
+        queue_.back().index = out.index;
+        skipping_points_ = true;
+      }
+    }
+    return true;
+  }
+}
+
+bool ProcedureGeneration::next_points(toolpath::Command& out) {
+  for (;;) {
+    if (!queue_.empty()) {
+      swap(out, queue_.front());
+      queue_.pop_front();
+      return true;
+    }
+    if (!bodies_->read(out)) return false;
+    last_index_ = out.index;
+    if (out.is_stream_command() && command_kind(out) == K::end_drill) {
+      const std::int64_t label = *cycles_[shared_[next_proc_ - jobs_.size() - 1]].label;
+      queue_.emplace_back();
+      bracket(queue_.back(), "@end_proc", label, false, last_index_);
+      if (!start_next_procedure()) phase_ = Phase::Main;
+    }
+    return true;
+  }
+}
+
+}  // namespace prp

@@ -1,0 +1,103 @@
+#include "prp/filters/structure_check.hpp"
+
+#include <fmt/format.h>
+
+#include "prp/filters/motion.hpp"
+
+namespace prp {
+
+StructureCheck::StructureCheck(toolpath::CommandSource& input, const MachineParameters& p, WarningSink warn)
+    : input_(input),
+      warn_(std::move(warn)),
+      gen_procs_(p.text("gen_procs")),
+      procs_off_(toolpath::iequals(gen_procs_, "N")),
+      calls_with_parameters_(toolpath::iequals(gen_procs_, "D")),
+      loop_exist_(p.logical("loop_exist")),
+      rotate_(p.logical("rotate")),
+      mirror_(p.logical("mirror")),
+      software_transform_(p.logical("software_transform")),
+      comp_exist_(p.logical("comp_exist")),
+      programs_(program_numbers(p)),
+      procedures_(procedure_numbers(p)) {
+  if (p.has("num_homes")) num_homes_ = p.integer("num_homes");
+}
+
+namespace {
+
+using K = CommandKind;
+// The only commands check() looks at.
+constexpr KindSet kChecked = bit(K::call_proc) | bit(K::call_prms) | bit(K::loop) | bit(K::rotate) | bit(K::mirror) |
+                             bit(K::change_ref_point) | bit(K::compensation) | bit(K::proc) |
+                             bit(K::start_of_file) | bit(K::home_number);
+
+}  // namespace
+
+bool StructureCheck::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  if (!input_.next(out, kind)) return false;
+  if (has(kChecked, kind) && out.is_stream_command()) check(out, kind);
+  return true;
+}
+
+void StructureCheck::check(const toolpath::Command& c, CommandKind kind) {
+  // Each kind of mismatch is reported once, at its first command: a trace repeats them.
+  auto warn = [&](const std::string& message) {
+    if (warn_ && warned_.insert(c.name).second) warn_(c, message);
+  };
+  switch (kind) {
+    case K::call_proc:
+      if (procs_off_) warn("@call_proc although the PRP says gen_procs = N");
+      break;
+    case K::call_prms:
+      if (!calls_with_parameters_)
+        warn(fmt::format("@call_prms although the PRP says gen_procs = {} (only D calls with parameters)", gen_procs_));
+      break;
+    case K::loop:
+      if (!loop_exist_) warn("@loop although the PRP says loop_exist = N");
+      break;
+    case K::rotate:
+      if (!rotate_) warn("@rotate although the PRP says rotate = N");
+      break;
+    case K::mirror:
+      if (!mirror_) warn("@mirror although the PRP says mirror = N");
+      break;
+    default: break;
+  }
+  if (software_transform_ && (kind == K::loop || kind == K::rotate || kind == K::mirror || kind == K::change_ref_point))
+    warn(fmt::format("{} although the PRP says software_transform = Y", c.name));
+
+  if (kind == K::compensation && !comp_exist_) {
+    if (const toolpath::Value* side = c.find("side"); side && !toolpath::iequals(side->text, "COMP_OFF"))
+      throw StreamError(c, fmt::format("compensation {} on a machine without it (comp_exist = N)", side->text));
+  }
+  if (kind == K::proc || kind == K::call_proc || kind == K::call_prms) {
+    if (auto label = number(c, "label"); label && !procedures_.contains(static_cast<std::int64_t>(*label)))
+      throw StreamError(c, fmt::format("procedure label {} is outside proc_num_min .. proc_num_max ({} .. {})",
+                                       *label, procedures_.min.value_or(0), procedures_.max.value_or(0)));
+  }
+  if (kind == K::start_of_file) {
+    if (auto n = number(c, "program_number"); n && !programs_.contains(static_cast<std::int64_t>(*n)))
+      throw StreamError(c, fmt::format("program number {} is outside prog_num_min .. prog_num_max ({} .. {})", *n,
+                                       programs_.min.value_or(0), programs_.max.value_or(0)));
+  }
+  if (kind == K::home_number && num_homes_) {
+    if (auto h = number(c, "home_number"); h && *h > static_cast<double>(*num_homes_))
+      warn(fmt::format("home_number {} is above num_homes {}", *h, *num_homes_));
+  }
+}
+
+DefaultPositions::DefaultPositions(toolpath::CommandSource& input, const MachineParameters& p) : input_(input) {
+  if (p.has("dflt_start")) start_ = p.point("dflt_start");
+  if (p.has("dflt_end")) end_ = p.point("dflt_end");
+}
+
+bool DefaultPositions::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  if (!input_.next(out, kind)) return false;
+  if (kind != CommandKind::start_program && kind != CommandKind::end_program) return true;
+  if (!out.is_stream_command()) return true;
+  if (out.find("xpos") || out.find("ypos") || out.find("zpos")) return true;
+  if (start_ && kind == CommandKind::start_program) set_point(out, *start_);
+  if (end_ && kind == CommandKind::end_program) set_point(out, *end_);
+  return true;
+}
+
+}  // namespace prp

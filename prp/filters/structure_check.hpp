@@ -1,0 +1,45 @@
+// Checks a structured toolpath (a SolidCAM trace already carries procedures, loops and
+// transformations) against the PRP's structure switches (spec 3.0, 3.5, 3.7, 3.9, 3.10). It never
+// restructures: mismatches are warnings; procedure labels or program numbers outside the PRP's
+// limits and controller compensation on a machine without it are errors.
+#pragma once
+
+#include <set>
+#include <string>
+
+#include "prp/filters/kind_source.hpp"
+#include "prp/prp.hpp"
+
+namespace prp {
+
+class StructureCheck final : public KindSource {
+public:
+  StructureCheck(toolpath::CommandSource& input, const MachineParameters& params, WarningSink warn);
+  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
+
+private:
+  void check(const toolpath::Command& c, CommandKind kind);
+
+  KindedInput input_;
+  WarningSink warn_;
+  std::string gen_procs_;
+  bool procs_off_, calls_with_parameters_;  // gen_procs N, D
+  bool loop_exist_, rotate_, mirror_, software_transform_, comp_exist_;
+  NumberRange programs_, procedures_;
+  std::optional<std::int64_t> num_homes_;
+  std::set<std::string> warned_;  // command names already reported
+};
+
+// Fills the program's start and end positions from dflt_start / dflt_end (spec 3.8) when the
+// toolpath does not give them: @start_program and @end_program without xpos, ypos and zpos.
+class DefaultPositions final : public KindSource {
+public:
+  DefaultPositions(toolpath::CommandSource& input, const MachineParameters& params);
+  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
+
+private:
+  KindedInput input_;
+  std::optional<Eigen::Vector3d> start_, end_;
+};
+
+}  // namespace prp
