@@ -3,29 +3,15 @@
 // usage: pikocnc_bench [LINES=3000000] [FILE=/tmp/pikocnc_bench.nc]   (Release build)
 #include <fmt/format.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
 
+#include "bench/read_timing.hpp"
 #include "machines/pikocnc/reader.hpp"
 
 namespace {
-
-long peak_rss_kb() {
-  std::ifstream status("/proc/self/status");
-  std::string key;
-  long value = 0;
-  while (status >> key) {
-    if (key == "VmHWM:") {
-      status >> value;
-      return value;
-    }
-    status.ignore(256, '\n');
-  }
-  return 0;
-}
 
 // Contours of 200 elements at depths stepping down, like a post writes them.
 void generate(const std::string& path, long lines) {
@@ -77,21 +63,13 @@ int main(int argc, char** argv) {
   const long lines = argc > 1 ? std::stol(argv[1]) : 3'000'000;
   const std::string path = argc > 2 ? argv[2] : "/tmp/pikocnc_bench.nc";
   generate(path, lines);
-  const long rss_before = peak_rss_kb();
-  const auto t0 = std::chrono::steady_clock::now();
+  const long rss_before = bench::peak_rss_kb();
   auto reader = pikocnc::PikoReader::open(path);
-  toolpath::Command c;
-  long commands = 0;
-  double checksum = 0;
-  while (reader->next(c)) {
-    ++commands;
-    if (!c.parameters.empty()) checksum += c.parameters.front().value.as_number();
-  }
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  fmt::print("{} lines, {} commands in {:.3f} s: {:.2f} M lines/s, {:.2f} M commands/s\n", lines, commands, s,
-             lines / s / 1e6, commands / s / 1e6);
-  fmt::print("peak RSS {} kB before reading, {} kB after; {} warnings; checksum {:.3f}\n", rss_before, peak_rss_kb(),
-             reader->diagnostics().total(), checksum);
+  const bench::ReadTiming t = bench::time_reading(*reader);
+  fmt::print("{} lines, {} commands in {:.3f} s: {:.2f} M lines/s, {:.2f} M commands/s\n", lines, t.commands,
+             t.seconds, lines / t.seconds / 1e6, t.commands / t.seconds / 1e6);
+  fmt::print("peak RSS {} kB before reading, {} kB after; {} warnings; checksum {:.3f}\n", rss_before,
+             bench::peak_rss_kb(), reader->diagnostics().total(), t.checksum);
   std::remove(path.c_str());
   return 0;
 }

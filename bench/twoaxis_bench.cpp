@@ -4,28 +4,14 @@
 // usage: twoaxis_bench [FRAMES=1000000] [FILE=/tmp/twoaxis_bench.nc]   (Release build)
 #include <fmt/format.h>
 
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <string>
 
+#include "bench/read_timing.hpp"
 #include "machines/2xaxiscnc/reader.hpp"
 
 namespace {
-
-long peak_rss_kb() {
-  std::ifstream status("/proc/self/status");
-  std::string key;
-  long value = 0;
-  while (status >> key) {
-    if (key == "VmHWM:") {
-      status >> value;
-      return value;
-    }
-    status.ignore(256, '\n');
-  }
-  return 0;
-}
 
 // "12,345" with the decimals the post writes (up to 4, trailing zeros stripped).
 void put_number(std::string& buf, long units) {
@@ -84,21 +70,13 @@ int main(int argc, char** argv) {
   const long frames = argc > 1 ? std::stol(argv[1]) : 1'000'000;
   const std::string path = argc > 2 ? argv[2] : "/tmp/twoaxis_bench.nc";
   generate(path, frames);
-  const long rss_before = peak_rss_kb();
-  const auto t0 = std::chrono::steady_clock::now();
+  const long rss_before = bench::peak_rss_kb();
   auto reader = twoaxis::TwoAxisReader::open(path);
-  toolpath::Command c;
-  long commands = 0;
-  double checksum = 0;
-  while (reader->next(c)) {
-    ++commands;
-    if (!c.parameters.empty()) checksum += c.parameters.front().value.as_number();
-  }
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  fmt::print("{} frames, {} commands in {:.3f} s: {:.2f} M frames/s, {:.2f} M commands/s\n", frames, commands, s,
-             frames / s / 1e6, commands / s / 1e6);
-  fmt::print("peak RSS {} kB before reading, {} kB after; {} diagnostics; checksum {:.3f}\n", rss_before, peak_rss_kb(),
-             reader->diagnostic_count(), checksum);
+  const bench::ReadTiming t = bench::time_reading(*reader);
+  fmt::print("{} frames, {} commands in {:.3f} s: {:.2f} M frames/s, {:.2f} M commands/s\n", frames, t.commands,
+             t.seconds, frames / t.seconds / 1e6, t.commands / t.seconds / 1e6);
+  fmt::print("peak RSS {} kB before reading, {} kB after; {} diagnostics; checksum {:.3f}\n", rss_before,
+             bench::peak_rss_kb(), reader->diagnostic_count(), t.checksum);
   std::remove(path.c_str());
   return reader->error_count() == 0 ? 0 : 1;
 }
