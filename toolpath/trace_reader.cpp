@@ -197,6 +197,7 @@ void TraceReader::parse_body_line(Command& out, bool first_after_header, std::si
     if (colon < s.size() && s[colon] == ':') {
       std::size_t v = skip_blanks(s, colon + 1);
       Parameter& p = add_parameter(out, used_parameters_, rest.substr(0, n));
+      mark_position(p, line_number_, v + 1);
       parse_value_into(p.value, s.substr(v), Place{file_, line_number_, v + 1});
       return;
     }
