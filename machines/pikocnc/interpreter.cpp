@@ -11,7 +11,7 @@ namespace pikocnc {
 Interpreter::Interpreter(std::istream& in, std::string file_name, Options options)
     : options_(std::move(options)),
       file_(std::move(file_name)),
-      lines_(in),
+      lines_(in, file_),
       diagnostics_(options_.diagnostic_limit),
       emitter_(options_.chord_tolerance),
       compensator_(file_, options_.arc_tolerance),

@@ -6,6 +6,9 @@
 
 #include "machines/pikocnc/codes.hpp"
 #include "machines/pikocnc/lexer.hpp"
+#include "machines/pikocnc/reader.hpp"
+
+#include <sstream>
 
 namespace {
 
@@ -92,6 +95,25 @@ TEST(PikoCodes, DialectsKnowTheirCodes) {
   EXPECT_TRUE(known('M', 99, 0, 0, Dialect::V2016));
   EXPECT_FALSE(known('M', 2, 0, 0, Dialect::V2025));  // M2 is not documented
   EXPECT_FALSE(known('G', 82, 0, 0, Dialect::V2025));
+}
+
+}  // namespace
+
+namespace {
+
+// A G-code line longer than 16 MiB is an error naming it, not a buffer that grows with the file.
+TEST(PikoLineReader, LinesLongerThanTheLimitAreAnError) {
+  std::istringstream in("%\nG0 X1\n(" + std::string(17 << 20, 'a'));
+  pikocnc::PikoReader reader(in, "long.nc", pikocnc::Options{});
+  toolpath::Command c;
+  std::string error;
+  try {
+    while (reader.next(c)) {
+    }
+  } catch (const toolpath::InputError& e) {
+    error = e.what();
+  }
+  EXPECT_EQ(error, "long.nc:3:1: line longer than 16 MiB: not a G-code program?");
 }
 
 }  // namespace
