@@ -42,6 +42,16 @@ bool zero_or_one(const toolpath::Value& v) {
   return x == 0.0 || x == 1.0;
 }
 
+// Values of the right type that still make no motion: a negative feed, an arc without a radius.
+std::string value_problem(const toolpath::Command& c, const toolpath::Parameter& p) {
+  if (p.value.kind != ValueKind::Numeric && p.value.kind != ValueKind::Integer) return {};
+  const double x = p.value.as_number();
+  if (p.key == toolpath::ParamKey::feed && x < 0) return fmt::format("expected a feed of 0 or more, not {}", shown(p.value));
+  if (p.key == toolpath::ParamKey::radius && x <= 0 && toolpath::iequals(c.name, "@arc"))
+    return fmt::format("expected an arc radius above 0, not {}", shown(p.value));
+  return {};
+}
+
 }  // namespace
 
 std::string kind_mismatch(ParameterKind kind, const toolpath::Value& v) {
@@ -91,7 +101,8 @@ bool ParameterCheck::next(toolpath::Command& out) {
   for (const toolpath::Parameter& p : out.parameters) {
     const int kind = kind_of(p);
     if (kind < 0) continue;
-    const std::string problem = kind_mismatch(static_cast<ParameterKind>(kind), p.value);
+    std::string problem = kind_mismatch(static_cast<ParameterKind>(kind), p.value);
+    if (problem.empty()) problem = value_problem(out, p);
     if (problem.empty()) continue;
     throw toolpath::InputError({file_, p.line, p.column},
                                fmt::format("parameter `{}` of {}: {}", p.name, out.name, problem));

@@ -76,6 +76,9 @@ TEST(ParameterCheck, ReadErrorsNameTheValue) {
       {"@start_of_file\ng_file_name : 5000\n", "job.trace:2:15: parameter `g_file_name` of @start_of_file: expected a string ('text'), not 5000"},
       {"@arc\narc_direction : 'CW'\n", "job.trace:2:17: parameter `arc_direction` of @arc: expected an enumeration word (such as CW or COMP_LEFT), not 'CW'"},
       {"@start_of_file\nrotate_used : 7\n", "job.trace:2:15: parameter `rotate_used` of @start_of_file: expected TRUE, FALSE, 0 or 1, not 7"},
+      {"@line\nxpos : 1\nfeed : -5\n", "job.trace:3:8: parameter `feed` of @line: expected a feed of 0 or more, not -5"},
+      {"@arc\nradius : 0.0\n", "job.trace:2:10: parameter `radius` of @arc: expected an arc radius above 0, not 0"},
+      {"@line\nfeed : 0\n", ""},
       // Deeper commands record what the original post did: kept as written.
       {"(2)@rapid_move      ==> xpos:abc\n", ""},
       // Names outside the catalogue hold anything.
