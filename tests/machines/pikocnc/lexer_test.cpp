@@ -32,7 +32,7 @@ std::string render(std::string_view line) {
 
 TEST(PikoLexer, Table) {
   struct Case {
-    const char* line;
+    std::string line;
     const char* expected;
   } cases[] = {
       {"G1 X45.5 Y30.2", "G1 X45.5 Y30.2"},
@@ -64,6 +64,7 @@ TEST(PikoLexer, Table) {
       {"G1 X1 X2", "G1 X2 [7:7 `X` given twice in one line: the last one counts]"},
       {"#1=5", " [7:1 stray character `#` skipped] [7:2 stray character `1` skipped] [7:3 stray character `=` skipped] [7:4 stray character `5` skipped]"},
       {"G1 X1\r", "G1 X1"},
+      {"G1 X1" + std::string(400, '0') + " Y1", "G1 Y1 [7:4 number after `X` out of range: word skipped]"},
       {"", ""},
   };
   for (const auto& c : cases) EXPECT_EQ(render(c.line), c.expected) << c.line;
