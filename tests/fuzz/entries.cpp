@@ -122,6 +122,13 @@ void gppl_run(std::string_view data) {
   namespace fs = std::filesystem;
   static const fs::path dir = fs::temp_directory_path() / ("postproc-fuzz-" + std::to_string(::getpid()));
   fs::create_directories(dir);
+  struct Cleanup {  // nothing left in the temporary folder, whatever the input did
+    fs::path dir;
+    ~Cleanup() {
+      std::error_code ignored;
+      fs::remove_all(dir, ignored);
+    }
+  } cleanup{dir};
   std::ofstream(dir / "fuzz.gpp", std::ios::binary) << data;
   try {
     postproc::EngineOptions options;
