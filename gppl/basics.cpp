@@ -41,8 +41,18 @@ Value Value::of_string(std::string v) {
   return r;
 }
 
+namespace {
+// `file:line:col: error N: text`; an error no source line caused (a value the host assigned) says
+// only what it can, never `:0:0:`.
+std::string error_text(int number, const Position& where, const std::string& text) {
+  if (where.line != 0) return fmt::format("{}:{}:{}: error {}: {}", where.file, where.line, where.column, number, text);
+  if (!where.file.empty()) return fmt::format("{}: error {}: {}", where.file, number, text);
+  return fmt::format("error {}: {}", number, text);
+}
+}  // namespace
+
 Error::Error(int number, Position where, const std::string& text)
-    : std::runtime_error(fmt::format("{}:{}:{}: error {}: {}", where.file, where.line, where.column, number, text)),
+    : std::runtime_error(error_text(number, where, text)),
       number_(number),
       where_(std::move(where)),
       text_(text) {}

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the build needs (Debian packages, only those missing), then configures and builds.
-# usage: scripts/bootstrap.sh [Debug|Release]   (Debug = ASan+UBSan, in build/; Release in build-release/)
+# usage: scripts/bootstrap.sh [Debug|Release|deps-only]   (Debug = ASan+UBSan, in build/; Release in
+# build-release/; deps-only: install the packages and stop)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -17,6 +18,8 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >&2
 fi
+
+[ "$type" = "deps-only" ] && exit 0
 
 dir=build
 [ "$type" = "Release" ] && dir=build-release

@@ -15,6 +15,7 @@ void Command::set(std::string_view parameter, Value value) {
   for (auto& p : parameters) {
     if (key != ParamKey::none ? p.key == key : p.key == ParamKey::none && iequals(p.name, parameter)) {
       p.value = std::move(value);
+      p.line = p.column = 0;  // no longer the value that was read there
       return;
     }
   }
@@ -26,6 +27,7 @@ void Command::set(ParamKey key, Value value) {
   for (auto& p : parameters) {
     if (p.key == key) {
       p.value = std::move(value);
+      p.line = p.column = 0;  // no longer the value that was read there
       return;
     }
   }

@@ -3,6 +3,7 @@
 
 #include <cassert>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -28,7 +29,13 @@ struct Parameter {
   std::string name;
   Value value;
   ParamKey key = ParamKey::none;
-  friend bool operator==(const Parameter&, const Parameter&) = default;
+  // Where the value was read (1-based; 0 when a filter or a model made it), for errors found later.
+  std::uint32_t line = 0;
+  std::uint32_t column = 0;
+  // The same parameter whatever its position in the source.
+  friend bool operator==(const Parameter& a, const Parameter& b) {
+    return a.key == b.key && a.name == b.name && a.value == b.value;
+  }
 };
 
 // Text attached to a command in a trace, kept in order. It is never a parameter.

@@ -121,6 +121,7 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
     }
     Parameter& param = *param_slot;
     const std::size_t v = i + name.length + 1;
+    mark_position(param, line_number_, column + v);
     const char first = text.data()[v];  // the terminator when the value is empty
     std::size_t end;
     if (first == '\'' || first == '"') {

@@ -16,6 +16,9 @@ using namespace trace_syntax;
 namespace {
 
 constexpr std::size_t kChunk = 1 << 18;
+// No trace line comes near this; a longer one (a binary file, a runaway generator) would only
+// take memory without bound.
+constexpr std::size_t kMaxLine = std::size_t{16} << 20;
 
 }  // namespace
 
@@ -55,6 +58,10 @@ bool TraceReader::read_line() {
         break;
       }
       carry_.append(start, avail);  // the line goes on in the next chunk
+      if (carry_.size() > kMaxLine) {
+        ++line_number_;
+        fail(1, "line longer than 16 MiB: not a trace file?");
+      }
       buffer_pos_ = buffer_.size();
     }
     if (stream_done_) {
@@ -197,6 +204,7 @@ void TraceReader::parse_body_line(Command& out, bool first_after_header, std::si
     if (colon < s.size() && s[colon] == ':') {
       std::size_t v = skip_blanks(s, colon + 1);
       Parameter& p = add_parameter(out, used_parameters_, rest.substr(0, n));
+      mark_position(p, line_number_, v + 1);
       parse_value_into(p.value, s.substr(v), Place{file_, line_number_, v + 1});
       return;
     }

@@ -231,6 +231,13 @@ inline bool store_exact_number(Value& out, const NumberScan& n, ChangeFlag flag)
   return true;
 }
 
+// Records where a parameter's value starts (saturating: positions past 2^32 are not told apart).
+inline void mark_position(Parameter& p, std::size_t line, std::size_t column) {
+  constexpr std::size_t kMax = 0xffffffff;
+  p.line = static_cast<std::uint32_t>(line < kMax ? line : kMax);
+  p.column = static_cast<std::uint32_t>(column < kMax ? column : kMax);
+}
+
 // Names parameter slot `used` of `out` (added when there is none) and counts it (trace_pairs.cpp).
 Parameter& new_slot(Command& out, std::size_t& used, std::string_view name);
 

@@ -372,16 +372,18 @@ std::uint32_t Compiler::reference(const SyntaxNode& variable, Context& ctx, bool
     error(target ? ErrorCode::DoesNotExist : ErrorCode::NotDefined, pos, name);
   }
   if (!ref.local) dims = &program_->globals[ref.id].dimensions;
+  // Counted now: an index expression may declare an implicit global, moving the globals (and dims).
+  const std::size_t dim_count = dims->size();
   std::vector<std::uint32_t> indices;
   if (variable.children.size() > 1)
     for (const auto& e : variable.children[1]->children) indices.push_back(expression(*e, ctx));
   if (undeclared) {
     // its shape is unknown: the use is refused when it runs, whatever its indices
-  } else if (dims->empty() && !indices.empty()) error(ErrorCode::OutOfRange, pos, {}, fmt::format("'{}' is not an array", name));
-  else if (!dims->empty() && indices.size() != dims->size())
+  } else if (dim_count == 0 && !indices.empty()) error(ErrorCode::OutOfRange, pos, {}, fmt::format("'{}' is not an array", name));
+  else if (dim_count != 0 && indices.size() != dim_count)
     error(ErrorCode::OutOfRange, pos, {},
           indices.empty() ? fmt::format("array '{}' is used without indices", name)
-                          : fmt::format("array '{}' has {} dimension(s)", name, dims->size()));
+                          : fmt::format("array '{}' has {} dimension(s)", name, dim_count));
   if (!indices.empty() && !undeclared) {
     ref.indices = std::uint32_t(program_->lists.size());
     ref.index_count = std::uint32_t(indices.size());

@@ -20,10 +20,19 @@ namespace {
 
 constexpr int kMaxIncludeDepth = 16;
 
+// Posts are kilobytes: reading stops at 64 MiB (a wrong file, /dev/zero as an include) with an
+// error rather than taking memory without bound.
+constexpr std::size_t kMaxSource = std::size_t{64} << 20;
+
 bool read_bytes(const std::string& path, std::string& out) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
-  out.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  out.clear();
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    out.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (out.size() > kMaxSource) return false;
+  }
   return !in.bad();
 }
 

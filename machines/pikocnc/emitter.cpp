@@ -1,9 +1,13 @@
 #include "machines/pikocnc/emitter.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
+
+#include "toolpath/error.hpp"
 
 namespace pikocnc {
 
@@ -17,6 +21,8 @@ void Emitter::finish_command() {
 
 void Emitter::add(std::string_view name) {
   finish_command();
+  if (++built_ > budget_)
+    throw toolpath::InputError({file_, line_, 1}, fmt::format("more than {} commands made: runaway loop or cycle stopped", budget_));
   if (muted_) {
     current_ = &scratch_;
     fill_ = 0;

@@ -63,6 +63,12 @@ public:
     line_attached_ = false;
   }
   void attach_nc_lines(bool on) { attach_ = on; }
+  // At most `max_commands` commands are built, muted ones included; one more is an InputError at
+  // the current line of `file` (a runaway loop or a cycle without end).
+  void limit(std::size_t max_commands, std::string file) {
+    budget_ = max_commands;
+    file_ = std::move(file);
+  }
   // A/B appear in motion commands once the program has used them.
   void use_a() { with_a_ = true; }
   void use_b() { with_b_ = true; }
@@ -102,6 +108,9 @@ private:
   bool saved_attached_ = false;
   bool muted_ = false;
   toolpath::Command scratch_;  // where muted commands go
+  std::size_t built_ = 0;
+  std::size_t budget_ = static_cast<std::size_t>(-1);
+  std::string file_;
 };
 
 }  // namespace pikocnc

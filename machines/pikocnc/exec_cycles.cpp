@@ -147,8 +147,9 @@ void Interpreter::lathe_thread(Words& w) {
   }
   const double side = xs > r0 ? -1.0 : 1.0;
   const double away = zs > z_end ? 1.0 : zs < z_end ? -1.0 : 0.0;
-  const long passes = static_cast<long>(std::ceil(depth / step - 1e-12));
-  if (passes > 100000) fail(w.col('J'), "G76 J is so small that the thread needs more than 100000 passes");
+  const double pass_count = std::ceil(depth / step - 1e-12);
+  if (!(pass_count <= 100000)) fail(w.col('J'), "G76 J is so small that the thread needs more than 100000 passes");
+  const long passes = static_cast<long>(pass_count);
   for (long k = 1; k <= passes; ++k) {
     const double d = std::min(static_cast<double>(k) * step, depth);
     auto go = [&](MoveKind kind, double x, double z) {
@@ -174,7 +175,7 @@ void Interpreter::lathe_thread(Words& w) {
 
 void Interpreter::probe(Words& w) {
   if (!w.owned('P')) fail(w.r.column(Op::G65), "G65 needs P (the probing cycle number)");
-  const int cycle = static_cast<int>(w.raw('P'));
+  const int cycle = int_word(w.raw('P'));
   if (cycle == 9810) {  // protected positioning: a feed move that stops on contact
     Eigen::Vector3d to = s_.prog;
     for (int i = 0; i < 3; ++i)
@@ -206,7 +207,7 @@ void Interpreter::probe(Words& w) {
   emitter_.text("args", args);
   // With S the measured base S := active base + error; the simulator measures no error.
   if (!w.b.has('S')) return;
-  const int s = static_cast<int>(w.b.get('S'));
+  const int s = int_word(w.b.get('S'));
   if (s < 1 || s > 6) {
     warn(w.col('S'), fmt::format("G65 S{} is not a work offset 1..6: no correction", s));
     return;

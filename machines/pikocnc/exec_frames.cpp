@@ -77,7 +77,7 @@ void Interpreter::offsets(const Resolved& r, Words& w) {
     if (op == Op::G10_1) from = s_.tip;
     if (op == Op::G10_2) {
       if (!w.owned('Q')) fail(r.column(op), "G10.2 needs Q (the PARK number)");
-      const int q = static_cast<int>(w.raw('Q'));
+      const int q = int_word(w.raw('Q'));
       const auto it = options_.parks.find(q);
       if (it == options_.parks.end()) {
         warn(w.col('Q'), fmt::format("PARK {} is not configured: G10.2 ignored", q));
@@ -144,8 +144,8 @@ void Interpreter::transforms(const Resolved& r, Words& w) {
         s_.transforms.push(rotation(centre(), s_.plane, w.raw('R')));
         break;
       case Op::G68_2: {
-        const int mode = w.owned('P') ? static_cast<int>(w.raw('P')) : 0;
-        const int order = w.owned('Q') ? static_cast<int>(w.raw('Q')) : 123;
+        const int mode = w.owned('P') ? int_word(w.raw('P')) : 0;
+        const int order = w.owned('Q') ? int_word(w.raw('Q')) : 123;
         Eigen::Vector3d angles = Eigen::Vector3d::Zero();
         for (int i = 0; i < 3; ++i) if (w.owned("IJK"[i])) angles[i] = w.raw("IJK"[i]);
         const auto t = tilted_plane(mode, order, angles, centre());

@@ -221,8 +221,13 @@ void Interpreter::arc(bool ccw, Words& w) {
   }
   const double r0 = (s2 - c2).norm(), r1 = (e2 - c2).norm();
   if (r0 < 1e-9) fail(motion_column_, "arc with zero radius (its centre is its start point)");
-  if (std::abs(r1 - r0) > std::max(0.002, 0.001 * r0))
-    warn(motion_column_, fmt::format("arc end radius {} differs from its start radius {}: the start radius is used", clean(r1), clean(r0)));
+  // An end point off the circle is a wrong program, like an R that cannot reach it (strict_arcs).
+  if (std::abs(r1 - r0) > std::max(options_.arc_tolerance, 0.001 * r0)) {
+    const std::string msg = fmt::format("arc end point is not on its circle: end radius {}, start radius {} (more than {} apart)",
+                                        clean(r1), clean(r0), clean(std::max(options_.arc_tolerance, 0.001 * r0)));
+    if (options_.strict_arcs) fail(motion_column_, msg);
+    warn(motion_column_, msg + ": the start radius is used");
+  }
   Move m;
   m.kind = MoveKind::Arc;
   m.from = start;

@@ -59,7 +59,7 @@ void Interpreter::spindle_event(int m) {
 void Interpreter::tool_and_m_codes(const Resolved& r, Words& w) {
   const bool g43 = r.has(Op::G43) || r.has(Op::G43_1) || r.has(Op::G43_2);
   if (w.has('T') && !g43) {
-    s_.selected_tool = static_cast<int>(w.raw('T'));
+    s_.selected_tool = int_word(w.raw('T'));
     if (s_.selected_tool < 0) warn(w.col('T'), "negative tool number");
   }
   if (r.has(Op::M6)) {
@@ -163,13 +163,13 @@ void Interpreter::misc_modes(const Resolved& r, Words& w) {
         return it == options_.tools.end() ? Axes5{} : it->second.offset;
       };
       if (op == Op::G43 && w.owned('T')) {
-        s_.tool = static_cast<int>(w.raw('T'));
+        s_.tool = int_word(w.raw('T'));
         next = table(s_.tool);
         emitter_.add("@change_tool");
         emitter_.integer("tool_number", s_.tool);
         emitter_.logical("silent", true);
       }
-      if (op == Op::G43 && w.owned('H')) next = table(static_cast<int>(w.raw('H')));
+      if (op == Op::G43 && w.owned('H')) next = table(int_word(w.raw('H')));
       bool any_axis = false;
       for (int i = 0; i < 5; ++i) {
         const char l = "XYZAB"[i];

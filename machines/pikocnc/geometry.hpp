@@ -48,4 +48,13 @@ double angle_degrees(const Eigen::Vector2d& p, const Eigen::Vector2d& centre);
 // Rounds to 1e-9 (a nanometre) and turns -0 into 0, so printed values are short and stable.
 double clean(double v);
 
+// A word's value as an integer (a code, a count, a table number): truncated, and saturated so that
+// a huge value stays huge and is rejected by the caller's range check (a plain cast is undefined).
+inline int int_word(double v) {
+  if (!(v == v)) return 0;
+  if (v >= 2147483647.0) return 2147483647;
+  if (v <= -2147483648.0) return -2147483647 - 1;
+  return static_cast<int>(v);
+}
+
 }  // namespace pikocnc

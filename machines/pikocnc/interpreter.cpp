@@ -11,12 +11,13 @@ namespace pikocnc {
 Interpreter::Interpreter(std::istream& in, std::string file_name, Options options)
     : options_(std::move(options)),
       file_(std::move(file_name)),
-      lines_(in),
+      lines_(in, file_),
       diagnostics_(options_.diagnostic_limit),
       emitter_(options_.chord_tolerance),
       compensator_(file_, options_.arc_tolerance),
       restarts_left_(options_.m99_restarts) {
   emitter_.attach_nc_lines(options_.nc_lines_in_trace);
+  emitter_.limit(options_.max_commands, file_);
   s_.bases = options_.work_offsets;
   s_.diameter = options_.lathe_diameter_default;
   s_.feed = options_.initial_feed;
@@ -127,6 +128,7 @@ void Interpreter::finish(std::string_view end_code) {
     return;
   }
   compensator_.stop(emitter_);
+  warn_open_loops();
   if (started_) {
     emitter_.add("@end_program");
     const Axes5 w = work_position();
@@ -146,6 +148,12 @@ void Interpreter::finish(std::string_view end_code) {
   emitter_.add("@end_of_file");
   emitter_.logical("auto_approach", !g115_seen_);
   finished_ = true;
+}
+
+// A G25 that no G125 closed: its body ran once, to wherever the program ended.
+void Interpreter::warn_open_loops() {
+  for (const Loop& l : loops_)
+    diagnostics_.add(l.line, l.column, "G25 without a closing G125: the body runs once, to the end of the program");
 }
 
 void Interpreter::ResolvedDeleter::operator()(Resolved* r) const { delete r; }
@@ -180,11 +188,13 @@ void Interpreter::execute(const Block& block) {
   if (r.has(Op::G25)) {
     if (!w.has('R')) fail(r.column(Op::G25), "G25 needs R (the number of passes)");
     double count = w.raw('R');
+    if (!(count <= options_.max_loop_count))
+      fail(w.col('R'), fmt::format("G25 R{}: expected a number of passes up to {}", count, options_.max_loop_count));
     if (count < 1) {
       warn(w.col('R'), "G25 R below 1: the body runs once");
       count = 1;
     }
-    loops_.push_back({lines_.mark(), static_cast<long long>(count), line_});
+    loops_.push_back({lines_.mark(), static_cast<long long>(count), line_, r.column(Op::G25)});
   }
   // 3-17: settings, in the documented order (exec_settings.cpp); units first so that lengths convert
   const bool codes = !r.only_motion();
@@ -216,9 +226,14 @@ void Interpreter::execute(const Block& block) {
       preview_.end();
     } else if (restarts_left_ > 0) {
       --restarts_left_;
+      warn_open_loops();
       loops_.clear();
       lines_.seek(program_start_);
     } else {
+      warn(r.column(Op::M99), options_.m99_restarts == 0
+                                  ? std::string("M99 repeats the program without end on the machine: read once here")
+                                  : fmt::format("M99 repeats the program without end on the machine: read {} times here",
+                                                options_.m99_restarts + 1));
       finish("M99");
     }
     return;

@@ -81,6 +81,7 @@ private:
 
   void execute(const Block& block);
   void finish(std::string_view end_code);
+  void warn_open_loops();
   [[noreturn]] void fail(std::size_t column, const std::string& message) const;
   void warn(std::size_t column, std::string message);
 
@@ -140,6 +141,7 @@ private:
     LineReader::Mark body;
     long long remaining;
     std::size_t line;
+    std::size_t column;  // of the G25, for the warning when no G125 closes it
   };
   std::vector<Loop> loops_;
   bool probe_protected_ = false;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <cmath>
 #include <string>
 
 namespace pikocnc {
@@ -65,7 +66,8 @@ struct Number {
         if (is_digit(c)) slow.push_back(c);
         else if (c == '.' || c == ',') slow.push_back('.');
       v = 0;
-      std::from_chars(slow.data(), slow.data() + slow.size(), v);
+      if (std::from_chars(slow.data(), slow.data() + slow.size(), v).ec != std::errc())
+        v = HUGE_VAL;  // beyond a double: the lexer skips the word (not 0, as it once read)
     }
     return negative ? -v : v;
   }
@@ -203,8 +205,13 @@ void lex_line(std::string_view s, std::size_t line_number, Block& out, Diagnosti
     const auto k = static_cast<std::size_t>(letter - 'A');
     if (out.present & (1u << k))
       diag.add(line_number, column, fmt::format("`{}` given twice in one line: the last one counts", letter));
+    const double value = n.value();
+    if (!std::isfinite(value)) {
+      diag.add(line_number, column, fmt::format("number after `{}` out of range: word skipped", letter));
+      continue;
+    }
     out.present |= 1u << k;
-    out.value[k] = n.value();
+    out.value[k] = value;
     out.column[k] = static_cast<std::uint32_t>(column);
   }
 }

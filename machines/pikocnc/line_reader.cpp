@@ -2,10 +2,13 @@
 
 #include <cstring>
 
+#include "toolpath/error.hpp"
+
 namespace pikocnc {
 
 namespace {
 constexpr std::size_t kChunk = 256 * 1024;
+constexpr std::size_t kMaxLine = std::size_t{16} << 20;
 }
 
 bool LineReader::fill() {
@@ -39,6 +42,8 @@ bool LineReader::next(std::string_view& line) {
     const bool need_more = end == size || (base[end] == '\r' && end + 1 == size);
     if (need_more && !at_eof_) {
       const std::size_t consumed = scan - pos_;
+      if (end - pos_ > kMaxLine)  // a binary file or a generator gone wrong: memory would grow without bound
+        throw toolpath::InputError({file_, line_ + 1, 1}, "line longer than 16 MiB: not a G-code program?");
       if (!fill() && buffer_.size() == pos_) return false;
       scan = pos_ + consumed;
       continue;

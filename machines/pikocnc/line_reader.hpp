@@ -7,6 +7,7 @@
 #include <istream>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace pikocnc {
 
@@ -17,7 +18,8 @@ public:
     std::size_t line = 0;      // number of lines before it
   };
 
-  explicit LineReader(std::istream& in) : in_(in) {}
+  // `file` names the input in the error for a line longer than 16 MiB.
+  LineReader(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
 
   // The next line without its line end (LF, CR LF or a lone CR); valid until the next call.
   bool next(std::string_view& line);
@@ -32,6 +34,7 @@ private:
 
   std::istream& in_;
   std::string buffer_;
+  std::string file_;
   std::uint64_t buffer_start_ = 0;  // file offset of buffer_[0]
   std::size_t pos_ = 0;
   std::size_t line_ = 0;

@@ -34,6 +34,11 @@ struct Options {
   std::set<int> macro_m_codes;            // M3, M5, M6 configured to run a macro of that name
   int m99_restarts = 0;                   // how often M99 restarts the program before stopping
   std::size_t max_executed_lines = 100'000'000;  // runaway guard for loops and M99
+  // A G25 R above this is no number of passes but a typing error (R99999999999999999999).
+  double max_loop_count = 1e9;
+  // Commands built in all (also while looking ahead): a runaway guard for loops and for cycles
+  // whose steps never end (G83 with a tiny Q), the same bound as `postproc verify`'s.
+  std::size_t max_commands = 1'000'000'000;
   bool cutter_compensation = true;        // false: G41/G42 are read but the programmed path is emitted
   bool strict_arcs = true;                // an arc whose radius cannot fit is an error (else a line)
   double arc_tolerance = 0.002;           // mm: chord longer than 2|R| by more than this is an error

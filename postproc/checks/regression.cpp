@@ -12,7 +12,7 @@ namespace {
 class FileLines final : public ExpectedLines {
 public:
   explicit FileLines(const std::string& path) : in_(path, std::ios::binary) {
-    if (!in_) throw std::runtime_error(path + ":0:0: cannot open the expected output");
+    if (!in_) throw std::runtime_error(path + ": cannot open the expected output");
   }
   bool next(ExpectedLine& out) override {
     if (!std::getline(in_, out.text)) return false;

@@ -1,6 +1,9 @@
 #include "postproc/cli/cli.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <exception>
+#include <stdexcept>
 
 #include "postproc/cli/version.hpp"
 
@@ -122,7 +125,10 @@ int main(std::span<const std::string> args, std::ostream& out, std::ostream& err
         print_help(c, out);
         return kOk;
       }
-      return c.run(parsed, out, err);
+      const int code = c.run(parsed, out, err);
+      // Output that did not reach its place (stdout on a full disk) is a failed run, not a success.
+      if (!out.flush()) throw std::runtime_error(std::string("cannot write the output: ") + std::strerror(errno));
+      return code;
     } catch (const UsageError& e) {
       err << "postproc " << c.name << ": " << e.message << "\nusage: " << c.usage << '\n';
       return kUsage;

@@ -10,6 +10,7 @@
 #include "machines/pikocnc/reader.hpp"
 #include "postproc/cli/cli.hpp"
 #include "postproc/cli/open_input.hpp"
+#include "postproc/engine/parameter_check.hpp"
 #include "toolpath/trace_reader.hpp"
 #include "toolpath/trace_writer.hpp"
 
@@ -50,7 +51,15 @@ std::unique_ptr<toolpath::CommandSource> open_twoaxis(const std::string& path, s
 
 std::unique_ptr<toolpath::CommandSource> open_source(const std::string& path, const std::string& dialect,
                                                      std::ostream& warnings, bool nc_lines) {
-  if (dialect == "trace") return toolpath::TraceReader::open(path);
+  if (dialect == "trace") {
+    struct Checked final : toolpath::CommandSource {  // catalogue types checked where they are read
+      std::unique_ptr<toolpath::TraceReader> reader;
+      postproc::ParameterCheck check;
+      Checked(std::unique_ptr<toolpath::TraceReader> r, const std::string& name) : reader(std::move(r)), check(*reader, name) {}
+      bool next(toolpath::Command& out) override { return check.next(out); }
+    };
+    return std::make_unique<Checked>(toolpath::TraceReader::open(path), path);
+  }
   if (dialect == "2xaxiscnc") return open_twoaxis(path, warnings);
   const auto piko = pikocnc::parse_dialect(dialect);
   if (!piko)

@@ -17,6 +17,7 @@
 #include "postproc/engine/enumerations.hpp"
 #include "postproc/engine/host_variables.hpp"
 #include "postproc/engine/line_numbers.hpp"
+#include "postproc/engine/parameter_check.hpp"
 #include "postproc/engine/parameter_binding.hpp"
 #include "postproc/engine/structure.hpp"
 #include "toolpath/prefetch.hpp"
@@ -80,6 +81,7 @@ public:
                                             : fmt::format("command #{} {}", sink_.command_index, sink_.command_name);
         }) {
     sink_.line_numbers = &line_numbers_;
+    binding_.set_input_name(options.input_name);
     interpreter_.set_trace_stream(options.trace);
     interpreter_.set_log_stream(engine.options().log);
     if (!engine.options().answers.empty()) interpreter_.set_answers(engine.options().answers);
@@ -117,9 +119,10 @@ public:
     // its own because a filter may have to take in the whole job before it hands anything on
     // (gen_procs: @start_of_file names the last subroutine label).
     StreamCommands stream(input);
+    ParameterCheck checked(stream, options_.input_name);  // wrong values stop at their own position
     // The PRP half follows the job's unit system, which the first command states; it must be
     // chosen before the filters compare anything against the PRP's tolerances.
-    toolpath::LookaheadSource first(stream);
+    toolpath::LookaheadSource first(checked);
     summary.units = engine_.options().units.value_or(job_units(first.peek()));
     machine_ = &engine_.machine(summary.units);
     toolpath::PrefetchSource read_ahead(first);

@@ -226,6 +226,11 @@ std::vector<fs::path> OutputFiles::commit() {
       continue;
     }
     if (e.final_path.has_parent_path()) fs::create_directories(e.final_path.parent_path(), error);
+    if (fs::exists(e.final_path, error) && !fs::is_regular_file(e.final_path, error)) {
+      write_through(e.temp_path, e.final_path);  // a device or a pipe: replacing it would destroy it
+      written.push_back(e.final_path);
+      continue;
+    }
     fs::rename(e.temp_path, e.final_path, error);
     if (error) {
       // Different file systems (the temporary folder may be elsewhere): copy, then remove.
@@ -238,6 +243,17 @@ std::vector<fs::path> OutputFiles::commit() {
   std::error_code ignored;
   fs::remove_all(temp_dir_, ignored);
   return written;
+}
+
+// Copies a finished temporary into a file that is not a regular file (/dev/stdout, /dev/full, a
+// FIFO): no rename is possible, so a failed write must at least be an error.
+void OutputFiles::write_through(const fs::path& from, const fs::path& to) {
+  std::ifstream in(from, std::ios::binary);
+  std::ofstream out(to, std::ios::binary);
+  if (!out) throw std::runtime_error("cannot write `" + to.string() + "`: " + std::strerror(errno));
+  if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();
+  out.flush();
+  if (!out) throw std::runtime_error("cannot write `" + to.string() + "`: " + std::strerror(errno));
 }
 
 void OutputFiles::commit_to(std::ostream& out) {
@@ -256,6 +272,7 @@ void OutputFiles::commit_to(std::ostream& out) {
   committed_ = true;
   std::error_code ignored;
   fs::remove_all(temp_dir_, ignored);
+  if (!out) throw std::runtime_error(std::string("cannot write the output: ") + std::strerror(errno));  // a full disk
 }
 
 }  // namespace postproc

@@ -62,6 +62,7 @@ public:
   void commit_to(std::ostream& out);
 
 private:
+  static void write_through(const std::filesystem::path& from, const std::filesystem::path& to);
   struct Entry {
     std::string name;  // as the post wrote it ("" for the main file)
     std::filesystem::path final_path;

@@ -1,9 +1,12 @@
 #include "postproc/engine/parameter_binding.hpp"
 
+#include <fmt/format.h>
+
 #include <span>
 #include <stdexcept>
 
 #include "postproc/engine/parameter_table.hpp"
+#include "toolpath/error.hpp"
 #include "toolpath/short_text.hpp"
 
 namespace postproc {
@@ -76,6 +79,12 @@ void ParameterBinding::assign_enum(Bound& b, const toolpath::Value& v, gppl::Cha
     b.enum_word = v.text;
   }
   interpreter_.assign_integer(id, b.enum_code, change);
+}
+
+void ParameterBinding::fail(const toolpath::Command& command, const toolpath::Parameter& p, const gppl::Error& e) const {
+  const std::string what = fmt::format("parameter `{}` of {}: error {}: {}", p.name, command.name, e.number(), e.text());
+  if (p.line != 0) throw toolpath::InputError({input_name_, p.line, p.column}, what);
+  throw gppl::Error(e.number(), gppl::Position{}, fmt::format("parameter `{}`: {}", p.name, e.text()));
 }
 
 gppl::Value ParameterBinding::convert(const toolpath::Value& v, bool to_string) {

@@ -47,15 +47,24 @@ public:
   ParameterBinding(gppl::Interpreter& interpreter, Enumerations& enums);
 
   // Assigns every parameter of `command` to its variable; `positions` belongs to the command's name.
+  // A value the variable cannot take is an error at the parameter's position in the input.
   void assign_all(const toolpath::Command& command, Positions& positions) {
     const std::size_t count = command.parameters.size();
-    for (std::size_t i = 0; i < count; ++i) {
-      const toolpath::Parameter& p = command.parameters[i];
-      Bound& b = p.key != toolpath::ParamKey::none ? keyed(p) : at_position(positions, i, p.name);
-      if (b.slot.id) assign(b, p.value);
-      else if (b.array) assign_element(b, p.value);
+    std::size_t i = 0;
+    try {
+      for (; i < count; ++i) {
+        const toolpath::Parameter& p = command.parameters[i];
+        Bound& b = p.key != toolpath::ParamKey::none ? keyed(p) : at_position(positions, i, p.name);
+        if (b.slot.id) assign(b, p.value);
+        else if (b.array) assign_element(b, p.value);
+      }
+    } catch (const gppl::Error& e) {
+      fail(command, command.parameters[i], e);
     }
   }
+
+  // The input's name for those errors.
+  void set_input_name(std::string name) { input_name_ = std::move(name); }
 
   // The variable of a parameter name (looked up once per name).
   const Slot& slot(std::string_view name);
@@ -64,6 +73,7 @@ public:
   gppl::Value convert(const toolpath::Value& v, bool to_string);
 
 private:
+  [[noreturn]] void fail(const toolpath::Command& command, const toolpath::Parameter& p, const gppl::Error& e) const;
   Bound& keyed(const toolpath::Parameter& p) {
     Bound& b = by_key_[static_cast<std::size_t>(p.key)];
     if (!b.resolved) resolve(b, p.name);
@@ -103,6 +113,7 @@ private:
 
   gppl::Interpreter& interpreter_;
   Enumerations& enums_;
+  std::string input_name_;
   std::vector<Bound> by_key_;  // indexed by ParamKey
   std::unordered_map<std::string, Slot, TransparentHash, std::equal_to<>> slots_;
 };

@@ -64,3 +64,15 @@ TEST(TraceReaderRobustness, MutationsReadOrFailWithAPosition) {
 }
 
 }  // namespace
+
+namespace {
+
+// A line without end (a binary file, a runaway generator) stops at 16 MiB instead of taking memory
+// without bound; one just under the limit still reads.
+TEST(TraceReaderRobustness, LinesLongerThanTheLimitAreAnError) {
+  const std::string head = "@start_of_file\nmsg : '";
+  EXPECT_EQ(try_read(head + std::string((16 << 20) - 100, 'a') + "'\n"), "");
+  EXPECT_EQ(try_read(head + std::string(17 << 20, 'a')), "m.trace:2:1: line longer than 16 MiB: not a trace file?");
+}
+
+}  // namespace

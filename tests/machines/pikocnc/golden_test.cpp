@@ -70,6 +70,8 @@ pikocnc::Options parse_options(const fs::path& file) {
       words >> o.m99_restarts;
     } else if (key == "max_lines") {
       words >> o.max_executed_lines;
+    } else if (key == "max_commands") {
+      words >> o.max_commands;
     } else if (key == "lenient_arcs") {
       o.strict_arcs = false;
     } else if (key == "macro_m") {

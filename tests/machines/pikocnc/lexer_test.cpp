@@ -6,6 +6,9 @@
 
 #include "machines/pikocnc/codes.hpp"
 #include "machines/pikocnc/lexer.hpp"
+#include "machines/pikocnc/reader.hpp"
+
+#include <sstream>
 
 namespace {
 
@@ -29,7 +32,7 @@ std::string render(std::string_view line) {
 
 TEST(PikoLexer, Table) {
   struct Case {
-    const char* line;
+    std::string line;
     const char* expected;
   } cases[] = {
       {"G1 X45.5 Y30.2", "G1 X45.5 Y30.2"},
@@ -61,6 +64,7 @@ TEST(PikoLexer, Table) {
       {"G1 X1 X2", "G1 X2 [7:7 `X` given twice in one line: the last one counts]"},
       {"#1=5", " [7:1 stray character `#` skipped] [7:2 stray character `1` skipped] [7:3 stray character `=` skipped] [7:4 stray character `5` skipped]"},
       {"G1 X1\r", "G1 X1"},
+      {"G1 X1" + std::string(400, '0') + " Y1", "G1 Y1 [7:4 number after `X` out of range: word skipped]"},
       {"", ""},
   };
   for (const auto& c : cases) EXPECT_EQ(render(c.line), c.expected) << c.line;
@@ -92,6 +96,25 @@ TEST(PikoCodes, DialectsKnowTheirCodes) {
   EXPECT_TRUE(known('M', 99, 0, 0, Dialect::V2016));
   EXPECT_FALSE(known('M', 2, 0, 0, Dialect::V2025));  // M2 is not documented
   EXPECT_FALSE(known('G', 82, 0, 0, Dialect::V2025));
+}
+
+}  // namespace
+
+namespace {
+
+// A G-code line longer than 16 MiB is an error naming it, not a buffer that grows with the file.
+TEST(PikoLineReader, LinesLongerThanTheLimitAreAnError) {
+  std::istringstream in("%\nG0 X1\n(" + std::string(17 << 20, 'a'));
+  pikocnc::PikoReader reader(in, "long.nc", pikocnc::Options{});
+  toolpath::Command c;
+  std::string error;
+  try {
+    while (reader.next(c)) {
+    }
+  } catch (const toolpath::InputError& e) {
+    error = e.what();
+  }
+  EXPECT_EQ(error, "long.nc:3:1: line longer than 16 MiB: not a G-code program?");
 }
 
 }  // namespace

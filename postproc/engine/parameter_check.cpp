@@ -1,0 +1,113 @@
+#include "postproc/engine/parameter_check.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+
+#include "toolpath/error.hpp"
+
+namespace postproc {
+namespace {
+
+using toolpath::ValueKind;
+
+// The catalogue kind of every keyed name, built once: the check costs one index per parameter.
+const std::array<int, toolpath::param_key_count + 1>& kinds_by_key() {
+  static const auto table = [] {
+    std::array<int, toolpath::param_key_count + 1> t;
+    t.fill(-1);
+    for (const ParameterSpec& spec : parameter_table())
+      if (const toolpath::ParamKey key = toolpath::param_key(spec.name); key != toolpath::ParamKey::none)
+        t[static_cast<std::size_t>(key)] = static_cast<int>(spec.kind);
+    return t;
+  }();
+  return table;
+}
+
+// The value as the user wrote it, near enough to find it on the line.
+std::string shown(const toolpath::Value& v) {
+  switch (v.kind) {
+    case ValueKind::Integer: return fmt::format("{}", v.integer);
+    case ValueKind::Numeric: return fmt::format("{}", v.numeric);
+    case ValueKind::Logical: return v.logical ? "TRUE" : "FALSE";
+    case ValueKind::String: return fmt::format("'{}'", v.text);
+    case ValueKind::Enum: return v.text;
+  }
+  return {};
+}
+
+bool zero_or_one(const toolpath::Value& v) {
+  const double x = v.kind == ValueKind::Integer ? double(v.integer) : v.numeric;
+  return x == 0.0 || x == 1.0;
+}
+
+// Values of the right type that still make no motion: a negative feed, an arc without a radius.
+std::string value_problem(const toolpath::Command& c, const toolpath::Parameter& p) {
+  if (p.value.kind != ValueKind::Numeric && p.value.kind != ValueKind::Integer) return {};
+  const double x = p.value.as_number();
+  if (p.key == toolpath::ParamKey::feed && x < 0) return fmt::format("expected a feed of 0 or more, not {}", shown(p.value));
+  if (p.key == toolpath::ParamKey::radius && x <= 0 && toolpath::iequals(c.name, "@arc"))
+    return fmt::format("expected an arc radius above 0, not {}", shown(p.value));
+  return {};
+}
+
+}  // namespace
+
+std::string kind_mismatch(ParameterKind kind, const toolpath::Value& v) {
+  // Each case accepts what the post variable takes without error or invented meaning (an unknown
+  // word would become an enumeration code in a number).
+  switch (kind) {
+    case ParameterKind::Numeric:
+      if (v.kind == ValueKind::Numeric && !std::isfinite(v.numeric)) return fmt::format("expected a finite number, not {}", shown(v));
+      if (v.kind == ValueKind::Integer || v.kind == ValueKind::Numeric || v.kind == ValueKind::Logical) return {};
+      return fmt::format("expected a number, not {}", shown(v));
+    case ParameterKind::Integer:
+      if (v.kind == ValueKind::Numeric && !(std::fabs(v.numeric) <= 999999999.0))
+        return fmt::format("expected an integer of at most 999999999, not {}", shown(v));
+      if (v.kind != ValueKind::String) return {};
+      return fmt::format("expected an integer, not {}", shown(v));
+    case ParameterKind::Logical:
+      if (v.kind == ValueKind::Logical) return {};
+      if ((v.kind == ValueKind::Integer || v.kind == ValueKind::Numeric) && zero_or_one(v)) return {};
+      return fmt::format("expected TRUE, FALSE, 0 or 1, not {}", shown(v));
+    case ParameterKind::String:
+      if (v.kind == ValueKind::String || v.kind == ValueKind::Enum) return {};
+      return fmt::format("expected a string ('text'), not {}", shown(v));
+    case ParameterKind::Enum:
+      if (v.kind != ValueKind::String) return {};
+      return fmt::format("expected an enumeration word (such as CW or COMP_LEFT), not {}", shown(v));
+  }
+  return {};
+}
+
+ParameterCheck::ParameterCheck(toolpath::CommandSource& inner, std::string file_name)
+    : inner_(inner), file_(std::move(file_name)) {}
+
+int ParameterCheck::kind_of(const toolpath::Parameter& p) {
+  if (p.key != toolpath::ParamKey::none) return kinds_by_key()[static_cast<std::size_t>(p.key)];
+  auto it = unkeyed_.find(p.name);
+  if (it == unkeyed_.end()) {
+    if (unkeyed_.size() > 4096) unkeyed_.clear();  // a stream of ever new names: keep memory flat
+    const ParameterSpec* spec = find_parameter(p.name);
+    it = unkeyed_.emplace(p.name, spec ? static_cast<int>(spec->kind) : -1).first;
+  }
+  return it->second;
+}
+
+bool ParameterCheck::next(toolpath::Command& out) {
+  if (!inner_.next(out)) return false;
+  if (!out.is_stream_command()) return true;  // what the original post did itself: kept as written
+  for (const toolpath::Parameter& p : out.parameters) {
+    const int kind = kind_of(p);
+    if (kind < 0) continue;
+    std::string problem = kind_mismatch(static_cast<ParameterKind>(kind), p.value);
+    if (problem.empty()) problem = value_problem(out, p);
+    if (problem.empty()) continue;
+    throw toolpath::InputError({file_, p.line, p.column},
+                               fmt::format("parameter `{}` of {}: {}", p.name, out.name, problem));
+  }
+  return true;
+}
+
+}  // namespace postproc

@@ -1,0 +1,36 @@
+// The types of the command catalogue (parameter_table.hpp) held against the stream as it is read:
+// a value its post variable cannot take (`xpos : 12..5`, a word where a number belongs, `TRUE`
+// where a string belongs) is an InputError at the value's own position, before any post runs.
+// `postproc read` and the engine both put it right behind the reader.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+
+#include "postproc/engine/parameter_table.hpp"
+#include "toolpath/source.hpp"
+
+namespace postproc {
+
+// What is wrong with `value` for a parameter of `kind` ("expected a number, not `12..5`"); empty
+// when the post variable takes it as it is or by an exact conversion.
+std::string kind_mismatch(ParameterKind kind, const toolpath::Value& value);
+
+class ParameterCheck final : public toolpath::CommandSource {
+public:
+  // `file_name` names the input in errors; `inner` must outlive the check.
+  ParameterCheck(toolpath::CommandSource& inner, std::string file_name);
+  bool next(toolpath::Command& out) override;
+
+private:
+  // The catalogue kind of a parameter, or -1 when it is not in the catalogue.
+  int kind_of(const toolpath::Parameter& p);
+
+  toolpath::CommandSource& inner_;
+  std::string file_;
+  std::unordered_map<std::string, int> unkeyed_;  // names outside the key list, looked up once
+};
+
+}  // namespace postproc

@@ -1,0 +1,15 @@
+%
+G0 X0 Y0 Z0
+G91
+G25 R3
+G1 Z-1 F100
+G125
+G90
+G0 X0 Y0 Z0
+G91
+G25 R2
+G25 R4
+G1 X1 F100
+G125
+G125 // end of the outer loop
+G90

@@ -1,0 +1,227 @@
+#include "tests/fuzz/entries.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gppl/builtins/display_format.hpp"
+#include "gppl/gppl.hpp"
+#include "machines/pikocnc/reader.hpp"
+#include "postproc/engine/engine.hpp"
+#include "postproc/engine/parameter_check.hpp"
+#include "prp/prp.hpp"
+#include "toolpath/trace_reader.hpp"
+#include "toolpath/trace_writer.hpp"
+
+namespace fuzz {
+namespace {
+
+// A broken promise of the code (not of the input): a finding.
+[[noreturn]] void broken(const char* what) {
+  std::fprintf(stderr, "fuzz: %s\n", what);
+  std::abort();
+}
+
+std::vector<toolpath::Command> read_all(const std::string& text) {
+  std::istringstream in(text);
+  toolpath::TraceReader reader(in, "fuzz.trace");
+  postproc::ParameterCheck check(reader, "fuzz.trace");
+  std::vector<toolpath::Command> all;
+  toolpath::Command c;
+  while (check.next(c)) all.push_back(c);
+  return all;
+}
+
+// The trace format has no escapes: a string holding a quote or a line end cannot be written so that
+// it reads back (docs/reliability.md); the round trip is held only for the others.
+bool representable(const toolpath::Command& c) {
+  for (const auto& p : c.parameters)
+    if (p.value.kind == toolpath::ValueKind::String && p.value.text.find_first_of("'\"\r\n") != std::string::npos) return false;
+  return true;
+}
+
+// A job of a few commands of every common kind: what a fuzzed post runs on.
+constexpr std::string_view kJob = R"(@start_of_file
+program_number : 1000
+g_file_name : 'FUZZ'
+@start_program
+@change_tool
+tool_number : 3
+tool_diameter : 10.0
+first_tool : TRUE
+spin : 4000
+@rapid_move
+xpos : 5.0
+ypos : -5.0
+zpos : 10.0
+@line
+xpos : 5.0
+ypos : 0.0
+zpos : -2.0
+feed : 400.0
+@arc
+xpos : 10.0
+ypos : 5.0
+zpos : -2.0
+xcenter : 10.0
+ycenter : 0.0
+radius : 5.0
+arc_direction : CCW
+arc_plane : XY
+feed : 400.0
+@end_program
+@end_of_file
+)";
+
+}  // namespace
+
+void trace_reader(std::string_view data) {
+  const std::string text(data);
+  std::vector<toolpath::Command> first;
+  try {
+    first = read_all(text);
+  } catch (const toolpath::InputError&) {
+    return;
+  }
+  std::ostringstream out;
+  {
+    toolpath::TraceWriter writer(out);
+    for (const auto& c : first) writer.write(c);
+  }
+  std::vector<toolpath::Command> again;
+  try {
+    again = read_all(out.str());
+  } catch (const toolpath::InputError& e) {
+    for (const auto& c : first)
+      if (!representable(c)) return;  // the format has no escapes: such text cannot be written back
+    std::fprintf(stderr, "%s\n", e.what());
+    broken("the canonical form does not read back");
+  }
+  if (again.size() != first.size()) broken("the canonical form reads back another number of commands");
+  for (std::size_t i = 0; i < first.size(); ++i)
+    if (representable(first[i]) &&
+        !(again[i].name == first[i].name && again[i].depth == first[i].depth && again[i].parameters == first[i].parameters))
+      broken("the canonical form reads back other commands");
+}
+
+void gppl_check(std::string_view data) {
+  try {
+    gppl::compile_source(data, "fuzz.gpp", gppl::CompileOptions{});
+  } catch (const gppl::Error&) {
+  } catch (const gppl::Errors&) {
+  }
+}
+
+void gppl_run(std::string_view data) {
+  namespace fs = std::filesystem;
+  static const fs::path dir = fs::temp_directory_path() / ("postproc-fuzz-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  struct Cleanup {  // nothing left in the temporary folder, whatever the input did
+    fs::path dir;
+    ~Cleanup() {
+      std::error_code ignored;
+      fs::remove_all(dir, ignored);
+    }
+  } cleanup{dir};
+  std::ofstream(dir / "fuzz.gpp", std::ios::binary) << data;
+  try {
+    postproc::EngineOptions options;
+    options.post = (dir / "fuzz.gpp").string();
+    options.max_loop_iterations = 10000;  // bounded: a fuzzed `while` must not hang the target
+    options.max_call_depth = 50;
+    postproc::Engine engine(options);
+    std::istringstream in{std::string(kJob)};
+    toolpath::TraceReader reader(in, "fuzz.trace");
+    postproc::OutputFiles files(dir, postproc::OutputFiles::LineEnd::LF, true);
+    postproc::RunOptions run;
+    run.input_name = "fuzz.trace";
+    engine.run(reader, files, run);
+    std::ostringstream nc;
+    files.commit_to(nc);
+  } catch (const toolpath::InputError&) {
+  } catch (const gppl::Error&) {
+  } catch (const gppl::Errors&) {
+  } catch (const postproc::RunError&) {
+  } catch (const prp::StreamError&) {
+  }
+}
+
+void display_format(std::string_view data) {
+  const std::size_t nl = data.find('\n');
+  const std::string_view spec = data.substr(0, nl);
+  gppl::DisplayFormat format;
+  try {
+    format = gppl::parse_display_format(spec);
+  } catch (const gppl::Error&) {
+    return;
+  }
+  for (double x : {0.0, -0.5, 1.25, 2.675, -123456.789, 1e15, 1e99, 1e101, 5e-324}) {
+    try {
+      (void)gppl::format_value(format, gppl::Value::of_numeric(x));
+    } catch (const gppl::Error&) {
+    }
+  }
+  for (std::int64_t i : {std::int64_t{0}, std::int64_t{-7}, std::int64_t{999999999}}) {
+    try {
+      (void)gppl::format_value(format, gppl::Value::of_integer(i));
+    } catch (const gppl::Error&) {
+    }
+  }
+}
+
+void prp_loader(std::string_view data) {
+  for (prp::Units units : {prp::Units::Metric, prp::Units::Inch}) {
+    std::string written;
+    try {
+      written = prp::write_source(prp::load_source(data, "fuzz.prp", units));
+    } catch (const prp::LoadError&) {
+      continue;
+    } catch (const toolpath::InputError&) {
+      continue;
+    }
+    try {
+      (void)prp::load_source(written, "written.prp", units);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      broken("the written PRP does not load");
+    }
+  }
+}
+
+void pikocnc(std::string_view data) {
+  pikocnc::Options options;
+  options.dialect = !data.empty() && data.front() == ';' ? pikocnc::Dialect::V2016 : pikocnc::Dialect::V2025;
+  options.max_executed_lines = 20000;  // bounded: loops and cycles stop with an error, never hang
+  options.max_commands = 20000;
+  options.m99_restarts = 2;
+  std::istringstream in{std::string(data)};
+  pikocnc::PikoReader reader(in, "fuzz.nc", options);
+  toolpath::Command c;
+  try {
+    while (reader.next(c)) {
+    }
+  } catch (const toolpath::InputError&) {
+  }
+}
+
+Entry entry(std::string_view target) {
+  struct Named {
+    std::string_view name;
+    Entry entry;
+  };
+  static constexpr Named kEntries[] = {
+      {"trace_reader", trace_reader}, {"gppl_check", gppl_check}, {"gppl_run", gppl_run},
+      {"display_format", display_format}, {"prp_loader", prp_loader}, {"pikocnc", pikocnc},
+  };
+  for (const Named& n : kEntries)
+    if (n.name == target) return n.entry;
+  return nullptr;
+}
+
+}  // namespace fuzz

@@ -1,0 +1,23 @@
+// What each fuzz target does with its bytes, shared by the libFuzzer targets (POSTPROC_FUZZ) and by
+// the regression test that replays tests/fuzz/regressions/<target>/* under the normal ASan build.
+// An entry returns normally for any input: errors of the input (InputError, gppl::Error, ...) are
+// caught here; anything else escaping, a sanitizer report, a hang or a broken round trip (abort)
+// is a finding.
+#pragma once
+
+#include <string_view>
+
+namespace fuzz {
+
+void trace_reader(std::string_view data);    // read, check the catalogue types, write, read back the same
+void gppl_check(std::string_view data);      // compile a post
+void gppl_run(std::string_view data);        // compile a post and run it on a small job, bounded
+void display_format(std::string_view data);  // parse a display format, apply it to a few values
+void prp_loader(std::string_view data);      // load a PRP (both unit halves), write it, load that again
+void pikocnc(std::string_view data);         // read PikoCNC G-code back into motion, bounded
+
+// The entry of a target by name (the folder names under regressions/); nullptr when unknown.
+using Entry = void (*)(std::string_view);
+Entry entry(std::string_view target);
+
+}  // namespace fuzz

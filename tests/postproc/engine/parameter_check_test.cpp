@@ -1,0 +1,114 @@
+// Values a post variable cannot take stop at their own position in the job: at read time for the
+// catalogue's parameters (ParameterCheck), at run time for the others (the binding), never `:0:0:`.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+#include "postproc/engine/engine.hpp"
+#include "postproc/engine/parameter_check.hpp"
+#include "toolpath/trace_reader.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using postproc::ParameterKind;
+using toolpath::Value;
+
+TEST(ParameterCheck, KindMismatchTable) {
+  struct Case {
+    ParameterKind kind;
+    Value value;
+    const char* problem;  // "" when accepted
+  } cases[] = {
+      {ParameterKind::Numeric, Value::make_numeric(1.5), ""},
+      {ParameterKind::Numeric, Value::make_integer(3), ""},
+      {ParameterKind::Numeric, Value::make_logical(true), ""},
+      {ParameterKind::Numeric, Value::make_string("12..5"), "expected a number, not '12..5'"},
+      {ParameterKind::Numeric, Value::make_enum("abc"), "expected a number, not abc"},
+      {ParameterKind::Integer, Value::make_integer(7), ""},
+      {ParameterKind::Integer, Value::make_numeric(7.0), ""},
+      {ParameterKind::Integer, Value::make_enum("Peck"), ""},  // drill_type: cycle names are codes
+      {ParameterKind::Integer, Value::make_numeric(1e12), "expected an integer of at most 999999999, not 1000000000000"},
+      {ParameterKind::Integer, Value::make_string("x"), "expected an integer, not 'x'"},
+      {ParameterKind::Logical, Value::make_logical(false), ""},
+      {ParameterKind::Logical, Value::make_integer(1), ""},
+      {ParameterKind::Logical, Value::make_integer(2), "expected TRUE, FALSE, 0 or 1, not 2"},
+      {ParameterKind::Logical, Value::make_enum("yes"), "expected TRUE, FALSE, 0 or 1, not yes"},
+      {ParameterKind::String, Value::make_string("PART"), ""},
+      {ParameterKind::String, Value::make_enum("PART"), ""},
+      {ParameterKind::String, Value::make_integer(5), "expected a string ('text'), not 5"},
+      {ParameterKind::Enum, Value::make_enum("CW"), ""},
+      {ParameterKind::Enum, Value::make_integer(1), ""},
+      {ParameterKind::Enum, Value::make_string("CW"), "expected an enumeration word (such as CW or COMP_LEFT), not 'CW'"},
+  };
+  for (const auto& c : cases)
+    EXPECT_EQ(postproc::kind_mismatch(c.kind, c.value), c.problem) << int(c.kind) << " " << c.value.text;
+}
+
+// The message `read` and `run` give for a job, or "" when it reads through.
+std::string read_error(const std::string& trace) {
+  std::istringstream in(trace);
+  toolpath::TraceReader reader(in, "job.trace");
+  postproc::ParameterCheck check(reader, "job.trace");
+  toolpath::Command c;
+  try {
+    while (check.next(c)) {
+    }
+  } catch (const toolpath::InputError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+TEST(ParameterCheck, ReadErrorsNameTheValue) {
+  struct Case {
+    const char* trace;
+    const char* error;
+  } cases[] = {
+      {"@start_of_file\n@rapid_move\nxpos : 12..5\n", "job.trace:3:8: parameter `xpos` of @rapid_move: expected a number, not '12..5'"},
+      {"(1)@rapid_move      ==> xpos:1.0 ypos:12..5 zpos:0.0\n",
+       "job.trace:1:39: parameter `ypos` of @rapid_move: expected a number, not '12..5'"},
+      {"@line\nfeed : fast\n", "job.trace:2:8: parameter `feed` of @line: expected a number, not fast"},
+      {"@start_of_file\ng_file_name : 5000\n", "job.trace:2:15: parameter `g_file_name` of @start_of_file: expected a string ('text'), not 5000"},
+      {"@arc\narc_direction : 'CW'\n", "job.trace:2:17: parameter `arc_direction` of @arc: expected an enumeration word (such as CW or COMP_LEFT), not 'CW'"},
+      {"@start_of_file\nrotate_used : 7\n", "job.trace:2:15: parameter `rotate_used` of @start_of_file: expected TRUE, FALSE, 0 or 1, not 7"},
+      {"@line\nxpos : 1\nfeed : -5\n", "job.trace:3:8: parameter `feed` of @line: expected a feed of 0 or more, not -5"},
+      {"@arc\nradius : 0.0\n", "job.trace:2:10: parameter `radius` of @arc: expected an arc radius above 0, not 0"},
+      {"@line\nfeed : 0\n", ""},
+      // Deeper commands record what the original post did: kept as written.
+      {"(2)@rapid_move      ==> xpos:abc\n", ""},
+      // Names outside the catalogue hold anything.
+      {"@line\nmy_note : 12..5\n", ""},
+  };
+  for (const auto& c : cases) EXPECT_EQ(read_error(c.trace), c.error) << c.trace;
+}
+
+// A parameter outside the catalogue that the post declares itself (`global numeric`): a value of
+// another type is an error of the run, at that value's position.
+TEST(ParameterCheck, RunErrorsNameTheValue) {
+  const fs::path dir = fs::temp_directory_path() / ("postproc-check-test-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "p.gpp") << "@init_post\n  global numeric my_depth\nendp\n@line\n  {nl, my_depth}\nendp\n";
+  postproc::EngineOptions engine_options;
+  engine_options.post = (dir / "p.gpp").string();
+  postproc::Engine engine(engine_options);
+  std::istringstream in("@start_of_file\n@line\nmy_depth : 5\n@line\nmy_depth : deep down\n");
+  toolpath::TraceReader reader(in, "job.trace");
+  postproc::OutputFiles files(dir, postproc::OutputFiles::LineEnd::LF, true);
+  postproc::RunOptions options;
+  options.input_name = "job.trace";
+  std::string error;
+  try {
+    engine.run(reader, files, options);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  fs::remove_all(dir);
+  EXPECT_EQ(error.rfind("job.trace:5:12: parameter `my_depth` of @line: error 386: ", 0), 0u) << "[" << error << "]";
+}
+
+}  // namespace
