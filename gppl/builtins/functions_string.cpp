@@ -168,9 +168,11 @@ std::tm now() {
   return tm;
 }
 
+// The month in capitals: a SolidCAM 2024 trace shows JUL where the manual prints 12-Apr-1994
+// (posts cut the month out with substr and print it as it is); real output wins.
 Value f_date(const FunctionSignature&, Args) {
-  static constexpr const char* months[] = {"Jan", "Feb", "Mar", "Apr", "May", "Jun",
-                                           "Jul", "Aug", "Sep", "Oct", "Nov", "Dec"};
+  static constexpr const char* months[] = {"JAN", "FEB", "MAR", "APR", "MAY", "JUN",
+                                           "JUL", "AUG", "SEP", "OCT", "NOV", "DEC"};
   std::tm tm = now();
   return Value::of_string(fmt::format("{:02}-{}-{:04}", tm.tm_mday, months[tm.tm_mon % 12], tm.tm_year + 1900));
 }
