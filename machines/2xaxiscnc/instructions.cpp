@@ -141,9 +141,13 @@ void TwoAxisReader::instruction(std::string_view text, std::size_t column, Comma
       double v[3];
       for (std::size_t i = 0; i < 3; ++i)
         if (!read_number(parts[i], arg_column + offsets[i], v[i])) return;
-      if (v[0] < 1 || v[0] != std::floor(v[0]) || v[2] < 0 || v[2] != std::floor(v[2]) || v[1] < 0) {
+      // Bounded before the integer conversions (a pin of 25 digits was an undefined cast, found by
+      // fuzzing): an LPT port has 25 pins; a billion pulses is far beyond any real program.
+      if (v[0] < 1 || v[0] > 25 || v[0] != std::floor(v[0]) || v[2] < 0 || v[2] > 1e9 || v[2] != std::floor(v[2]) ||
+          v[1] < 0) {
         diagnose(Diagnostic::Severity::Error, arg_column,
-                 fmt::format("pulse instruction `{}`: the pin and the count must be whole, the interval not negative", text));
+                 fmt::format("pulse instruction `{}`: the pin must be whole in 1..25, the count whole in 0..1e9, the "
+                             "interval not negative", text));
         return;
       }
       pause_seconds_ += v[1] * v[2];

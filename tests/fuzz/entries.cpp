@@ -12,6 +12,7 @@
 
 #include "gppl/builtins/display_format.hpp"
 #include "gppl/gppl.hpp"
+#include "machines/2xaxiscnc/reader.hpp"
 #include "machines/pikocnc/reader.hpp"
 #include "postproc/engine/engine.hpp"
 #include "postproc/engine/parameter_check.hpp"
@@ -194,6 +195,25 @@ void prp_loader(std::string_view data) {
   }
 }
 
+// The loader picks the VMID reader by content (a first non-blank `<`): the input always gets one,
+// so mutations explore the XML mapping rather than falling back to the PRP syntax.
+void vmid(std::string_view data) {
+  std::string xml;
+  if (data.find_first_not_of(" \t\r\n") == std::string_view::npos || data[data.find_first_not_of(" \t\r\n")] != '<')
+    xml = "<";
+  xml += data;
+  prp_loader(xml);
+}
+
+void twoaxis(std::string_view data) {
+  // Never throws on a bad program (diagnostics instead); scripts are not looked up (no folder).
+  auto reader = twoaxis::TwoAxisReader::from_string(std::string(data), "fuzz.nc");
+  toolpath::Command c;
+  long commands = 0;
+  while (reader->next(c))
+    if (++commands > 1'000'000) broken("a 2XAxisCNC program of bounded size gave more than a million commands");
+}
+
 void pikocnc(std::string_view data) {
   pikocnc::Options options;
   options.dialect = !data.empty() && data.front() == ';' ? pikocnc::Dialect::V2016 : pikocnc::Dialect::V2025;
@@ -218,6 +238,7 @@ Entry entry(std::string_view target) {
   static constexpr Named kEntries[] = {
       {"trace_reader", trace_reader}, {"gppl_check", gppl_check}, {"gppl_run", gppl_run},
       {"display_format", display_format}, {"prp_loader", prp_loader}, {"pikocnc", pikocnc},
+      {"vmid", vmid}, {"twoaxis", twoaxis},
   };
   for (const Named& n : kEntries)
     if (n.name == target) return n.entry;

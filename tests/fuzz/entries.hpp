@@ -15,6 +15,8 @@ void gppl_run(std::string_view data);        // compile a post and run it on a s
 void display_format(std::string_view data);  // parse a display format, apply it to a few values
 void prp_loader(std::string_view data);      // load a PRP (both unit halves), write it, load that again
 void pikocnc(std::string_view data);         // read PikoCNC G-code back into motion, bounded
+void vmid(std::string_view data);            // load a VMID machine file (XML) like prp_loader: load, write, load
+void twoaxis(std::string_view data);         // read a 2XAxisCNC program back into stream commands
 
 // The entry of a target by name (the folder names under regressions/); nullptr when unknown.
 using Entry = void (*)(std::string_view);
