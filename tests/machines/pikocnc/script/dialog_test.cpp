@@ -78,7 +78,7 @@ TEST(ScriptArgs, Tv10Overrides) {
 TEST(ScriptArgs, Tv10BadOverrides) {
   RunInputs in;
   in.args = {{"5", "1800.5"}};
-  EXPECT_NE(run(kFront, in).error.find("argument 5 (`Szybkość obróbki w osi XY (mm/min)`) is a integer field"), std::string::npos);
+  EXPECT_NE(run(kFront, in).error.find("argument 5 (`Szybkość obróbki w osi XY (mm/min)`) is an integer field"), std::string::npos);
   in.args = {{"9", "1"}};
   EXPECT_NE(run(kFront, in).error.find("argument 9 is not defined by the script"), std::string::npos);
   in.args = {{"4", "7"}};
