@@ -63,21 +63,6 @@ script::RunInputs inputs_from(const Arguments& args) {
   return in;
 }
 
-void write_atomically(const std::string& output, const std::string& text) {
-  const std::string temp = output + ".tmp";
-  {
-    std::ofstream file(temp, std::ios::binary | std::ios::trunc);
-    file << text;
-    if (!file.flush()) throw toolpath::InputError({output, 0, 0}, "cannot write file");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, output, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    throw toolpath::InputError({output, 0, 0}, "cannot write file");
-  }
-}
-
 int run_script(const Arguments& args, std::ostream& out, std::ostream& err) {
   const auto& pos = args.positional();
   if (pos.size() != 2 || (pos[0] != "run" && pos[0] != "check"))
@@ -90,15 +75,33 @@ int run_script(const Arguments& args, std::ostream& out, std::ostream& err) {
     return kOk;
   }
   const script::RunInputs in = inputs_from(args);
-  // The program is built in memory and written only when the run succeeds (spec 2.6).
-  std::ostringstream gcode;
-  const auto result = script::run_script(*program, in, gcode, err);
   const std::string output = args.value("--output");
   if (output.empty() || output == "-") {
+    // stdout: held in memory so that a failing script prints no partial program (spec 2.6).
+    std::ostringstream gcode;
+    script::run_script(*program, in, gcode, err);
     out << gcode.str();
     return kOk;
   }
-  write_atomically(output, gcode.str());
+  // A file: streamed to a temporary name, renamed only when the run succeeds.
+  const std::string temp = output + ".tmp";
+  script::RunResult result;
+  try {
+    std::ofstream file(temp, std::ios::binary | std::ios::trunc);
+    if (!file) throw toolpath::InputError({output, 0, 0}, "cannot write file");
+    result = script::run_script(*program, in, file, err);
+    if (!file.flush()) throw toolpath::InputError({output, 0, 0}, "cannot write file");
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(temp, ec);
+    throw;
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, output, ec);
+  if (ec) {
+    std::filesystem::remove(temp, ec);
+    throw toolpath::InputError({output, 0, 0}, "cannot write file");
+  }
   if (!result.described) err << fmt::format("{}: wrote {} ({} lines)\n", path, output, result.lines);
   return kOk;
 }

@@ -61,13 +61,12 @@ double rad(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
 Value Interpreter::builtin(const Expr& e) {
   step(e.pos);
-  std::vector<Value> a;
+  Value a[3];  // no built-in takes more; no allocation per call
+  const std::size_t argc = e.kids.size();
   const B id = B(e.slot);
   const bool by_ref = id == B::LineInt || id == B::Inc || id == B::Dec;
-  a.reserve(e.kids.size());
-  for (std::size_t i = 0; i < e.kids.size(); ++i)
-    if (!(by_ref && ((id == B::LineInt && i == 2) || (id != B::LineInt && i == 0)))) a.push_back(eval(*e.kids[i]));
-    else a.emplace_back();
+  for (std::size_t i = 0; i < argc; ++i)
+    if (!(by_ref && ((id == B::LineInt && i == 2) || (id != B::LineInt && i == 0)))) a[i] = eval(*e.kids[i]);
   auto num = [&](std::size_t i) {
     const double v = a[i].kind == Kind::Integer ? double(a[i].i) : a[i].f;
     if (!std::isfinite(v)) fail(e.kids[i]->pos, "the value is not a finite number");
@@ -214,7 +213,7 @@ Value Interpreter::builtin(const Expr& e) {
       case B::Inc:
       case B::Dec: {
         Value* target = ref(*e.kids[0]);
-        const Value by = a.size() > 1 ? a[1] : Value::integer(1);
+        const Value by = argc > 1 ? a[1] : Value::integer(1);
         *target = apply_binary(id == B::Inc ? Bin::Add : Bin::Sub, *target, by);
         return {};
       }

@@ -151,12 +151,27 @@ Type Compiler::type_of(const Node& node) {
     Shape shape;
     shape.name = "array";
     shape.element = type_of(*node.children.back());
+    if (double(high - low + 1) * double(value_count(shape.element)) > 1e6)
+      fail(range, "array too large: at most 1000000 values in all (records count each field)");
     shape.low = low;
     shape.count = high - low + 1;
     program_->shapes.push_back(std::move(shape));
     return {Kind::Array, 0, std::int32_t(program_->shapes.size() - 1)};
   }
   fail(node, "expected a type");
+}
+
+std::int64_t Compiler::value_count(const Type& t) const {
+  if (t.kind == Kind::Record) {
+    std::int64_t n = 0;
+    for (const auto& f : program_->shapes[std::size_t(t.shape)].field_types) n += value_count(f);
+    return n;
+  }
+  if (t.kind == Kind::Array) {
+    const Shape& s = program_->shapes[std::size_t(t.shape)];
+    return s.count * value_count(s.element);
+  }
+  return 1;
 }
 
 void Compiler::declarations(const Node& section, bool global) {
@@ -166,6 +181,9 @@ void Compiler::declarations(const Node& section, bool global) {
     if (is<g::var_decl>(*d)) {
       const Type t = type_of(*d->children.back());
       for (const auto& name : d->children.front()->children) {
+        // Locals are made anew on every call, recursive ones too: keep them small.
+        if (!global && value_count(t) > 10'000)
+          fail(*name, "a local variable may hold at most 10000 values: declare a large array globally");
         declare(*name, {Symbol::What::Var, std::int32_t(slots.size()), t, false}, global);
         slots.push_back(t);
       }

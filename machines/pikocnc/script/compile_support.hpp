@@ -44,6 +44,7 @@ public:
   void declarations(const Node& section, bool global);
   void routine(const Node& node);
   Type type_of(const Node& node);
+  std::int64_t value_count(const Type& type) const;  // basic values a variable of the type holds
   void declare(const Node& name, Symbol symbol, bool global);
 
   // --- compile_exprs.cpp

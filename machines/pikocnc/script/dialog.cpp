@@ -135,7 +135,9 @@ void Dialog::apply(const std::map<std::string, std::string>& overrides) {
     ArgDef& def = it->second;
     std::string text = raw;
     auto bad = [&](const char* want) {
-      return OpError(fmt::format("argument {} (`{}`) is a {} field: `{}` is not {}", num, def.label, widget_name(def.widget), raw, want));
+      const char* kind = widget_name(def.widget);
+      const char* article = kind[0] == 'i' ? "an" : "a";
+      return OpError(fmt::format("argument {} (`{}`) is {} {} field: `{}` is not {}", num, def.label, article, kind, raw, want));
     };
     switch (def.widget) {
       case Widget::Float: {

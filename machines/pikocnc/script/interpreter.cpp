@@ -11,6 +11,12 @@
 
 namespace pikocnc::script {
 
+namespace {
+// Stack the interpreter may use for nested script calls; well under the usual 8 MB main stack
+// even with sanitizer-sized frames.
+constexpr std::uintptr_t kStackBudget = 5u << 20;
+}  // namespace
+
 Interpreter::Interpreter(const Program& program, const RunInputs& inputs, std::ostream& gcode, std::ostream& diagnostics)
     : program_(program),
       inputs_(inputs),
@@ -75,6 +81,8 @@ Value Interpreter::make_default(const Type& t) const {
 
 RunResult Interpreter::run() {
   RunResult result;
+  const char base_marker = 0;
+  stack_base_ = reinterpret_cast<std::uintptr_t>(&base_marker);
   for (const auto& t : program_.globals) globals_.push_back(make_default(t));
   Frame top;
   frame_ = &top;
@@ -257,6 +265,11 @@ Value Interpreter::call(const Expr& e) {
   if (depth_ >= inputs_.max_call_depth)
     fail(e.pos, fmt::format("runaway recursion: more than {} nested calls (calling `{}`)", inputs_.max_call_depth, r.name));
   step(e.pos);
+  const char marker = 0;
+  const std::uintptr_t here = reinterpret_cast<std::uintptr_t>(&marker);
+  const std::uintptr_t used = here > stack_base_ ? here - stack_base_ : stack_base_ - here;
+  if (used > kStackBudget)
+    fail(e.pos, fmt::format("runaway recursion: the script's calls nest too deeply (calling `{}`)", r.name));
   Frame frame;
   frame.slots.reserve(r.locals.size());
   for (const auto& t : r.locals) frame.slots.push_back(make_default(t));

@@ -57,6 +57,8 @@ private:
   std::vector<Value> globals_;
   Frame* frame_ = nullptr;
   std::uint32_t depth_ = 0;
+  std::uintptr_t stack_base_ = 0;  // address of a local in run(): deep expressions inside deep
+                                   // recursion are stopped by stack use, not only by call depth
   std::uint64_t steps_ = 0;
   std::vector<double> predefined_;
   std::vector<bool> predefined_given_, predefined_read_;

@@ -13,6 +13,7 @@ namespace {
 
 constexpr std::int64_t kMin = std::numeric_limits<std::int32_t>::min();
 constexpr std::int64_t kMax = std::numeric_limits<std::int32_t>::max();
+constexpr std::size_t kMaxString = 16u << 20;  // a doubling loop must fail, not eat the memory
 
 std::int64_t fit(std::int64_t v) {
   if (v < kMin || v > kMax) throw OpError(fmt::format("integer overflow ({} does not fit an Integer)", v));
@@ -64,8 +65,12 @@ Value apply_binary(Bin op, const Value& a, const Value& b) {
   const bool ints = a.kind == Kind::Integer && b.kind == Kind::Integer;
   switch (op) {
     case Bin::Add:
-      if (a.kind == Kind::String && b.kind == Kind::String) return Value::text(a.s + b.s);
-      if (a.kind == Kind::String || b.kind == Kind::String) return Value::text(value_text(a) + value_text(b));
+      if (a.kind == Kind::String || b.kind == Kind::String) {
+        std::string s = a.kind == Kind::String ? a.s : value_text(a);
+        const std::string& t = b.kind == Kind::String ? b.s : value_text(b);
+        if (s.size() + t.size() > kMaxString) throw OpError("string too long (more than 16 MB)");
+        return Value::text(s + t);
+      }
       return ints ? Value::integer(fit(a.i + b.i)) : Value::real(finite(num(a) + num(b)));
     case Bin::Sub: return ints ? Value::integer(fit(a.i - b.i)) : Value::real(finite(num(a) - num(b)));
     case Bin::Mul: return ints ? Value::integer(fit(a.i * b.i)) : Value::real(finite(num(a) * num(b)));

@@ -158,7 +158,7 @@ const Case kErrors[] = {
     {"var x: Integer;\nx := 0;\nSetX(1 div x);", "t.pas:3:8: division by zero"},
     {"SetX(1 / 0);", "t.pas:1:8: division by zero"},
     {"while true do ;", "runaway script: more than 100000 statements executed"},
-    {"procedure P; begin P; end; begin P; end.", "runaway recursion: more than 1000 nested calls (calling `P`)"},
+    {"procedure P; begin P; end; begin P; end.", "t.pas:1:20: runaway recursion"},
     {"SetG(300);", "t.pas:1:6: 300 is out of the Byte range 0..255"},
     {"SetX(ArcSin(2));", "t.pas:1:6: ArcSin: argument 2 is outside the domain"},
     {"SetX(Sqrt(-1));", "t.pas:1:6: Sqrt: argument -1 is outside the domain"},
@@ -176,6 +176,12 @@ const Case kErrors[] = {
      "((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((1",
      "nesting too deep"},
     {"SetX(1)\0;", "t.pas:1:8: unexpected NUL byte"},
+    {"var s: String; i: Integer;\nbegin s := 'ab'; for i := 1 to 40 do s := s + s; end.", "t.pas:2:45: string too long"},
+    {"var a: array[1..1000000] of TLine;", "t.pas:1:14: array too large"},
+    {"procedure P; var a: array[1..20000] of Integer; begin end;", "t.pas:1:18: a local variable may hold at most 10000 values"},
+    {"function F(n: Integer): Integer; begin Result := 1 + (1 + (1 + (1 + F(n + 1)))); end;\nbegin SetX(F(0)); end.",
+     "runaway recursion"},
+    {"SetX(1e300 * 1e300);", "t.pas:1:12: floating-point overflow"},
 };
 
 TEST(ScriptErrors, Table) {
