@@ -1,6 +1,7 @@
 // Expressions: operators with Pascal's precedence (the grammar's term/simple/expr levels),
 // designators, calls of routines and built-ins, static types and the implicit conversions of 2.3.
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 
 #include "machines/pikocnc/script/compile_support.hpp"
@@ -61,6 +62,7 @@ ExprPtr Compiler::literal(const Node& node) {
   if (is<g::real_lit>(node)) {
     auto e = make(Op::Literal, at, {Kind::Float});
     e->literal = Value::real(std::strtod(text.c_str(), nullptr));
+    if (!std::isfinite(e->literal.f)) fail(node, "number too large for Extended");
     return e;
   }
   if (is<g::int_lit>(node) || is<g::hex_lit>(node)) {

@@ -122,11 +122,11 @@ void Dialog::separator(const std::string& text) {
 }
 
 void Dialog::apply(const std::map<std::string, std::string>& overrides) {
-  edited_ = true;
-  if (!layout_) {
+  if (!layout_ && !edited_) {
     // No layout routine ran: every argument on one tab, by number (spec 6.3).
     for (const auto& [num, def] : args_) tabs_.front().items.push_back({num, {}});
   }
+  edited_ = true;
   for (const auto& [key, raw] : overrides) {
     std::int64_t num = 0;
     if (!parse_integer(key, num)) throw OpError(fmt::format("argument override `{}`: not an argument number", key));

@@ -101,7 +101,7 @@ struct semi : sym<';'> {};
 struct comma : sym<','> {};
 struct assign_op : sym<':', '='> {};
 struct dot : tok<p::seq<p::one<'.'>, p::not_at<p::one<'.'>>>> {};
-struct args : p::seq<sym<'('>, p::opt<p::must<expr>, p::star<comma, p::must<expr>>>, p::must<close_paren>> {};
+struct args : p::seq<sym<'('>, p::opt<expr, p::star<comma, p::must<expr>>>, p::must<close_paren>> {};
 struct field_sel : p::seq<dot, p::must<ident>> {};
 struct index_sel : p::seq<sym<'['>, p::must<expr>, p::must<close_bracket>> {};
 struct designator : p::seq<ident, p::star<p::sor<field_sel, index_sel, args>>> {};
@@ -185,7 +185,10 @@ struct decl : p::sor<const_sec, type_sec, var_sec, routine> {};
 struct program_head : p::seq<kw_program, p::must<ident>, p::must<semi>> {};
 struct main_block : p::seq<block, sym<'.'>, p::eof> {};
 struct script_end : p::eof {};
-struct fragment : p::seq<stmt_list, p::must<script_end>> {};
+// A declaration after the statements of a fragment: say so rather than "expected ';'".
+struct decl_first : p::failure {};
+struct late_decl : p::seq<p::at<p::sor<kw_var, kw_const, kw_type, kw_procedure, kw_function>>, p::must<decl_first>> {};
+struct fragment : p::seq<stmt_list, p::opt<late_decl>, p::must<script_end>> {};
 struct script : p::seq<sp, p::opt<program_head>, p::star<decl>, p::sor<main_block, fragment>> {};
 
 // --- the parse tree ---------------------------------------------------------------------------
@@ -236,6 +239,8 @@ template <> inline constexpr std::string_view expected<type_def> = "a type defin
 template <> inline constexpr std::string_view expected<var_decl> = "a variable declaration (names: type;)";
 template <> inline constexpr std::string_view expected<param> = "a parameter (name: type)";
 template <> inline constexpr std::string_view expected<routine_body> = "'begin' of the routine's body";
+template <> inline constexpr std::string_view expected<decl_first> =
+    "every declaration (var, const, type, procedure, function) before the first statement";
 template <> inline constexpr std::string_view expected<script_end> = "';' or the end of the script";
 template <> inline constexpr std::string_view expected<sq_end> = "a closing ' (unterminated string)";
 template <> inline constexpr std::string_view expected<dq_end> = "a closing \" (unterminated string)";

@@ -115,6 +115,7 @@ const Case kBuiltins[] = {
      "procedure Twice(var v: Integer); begin v := v * 2; end;\n"
      "var k: Integer; begin k := 4; Twice(k); SetX(Sq(3) + Fact(5) + k); Write; end.",
      "X137.0\n"},
+    {"function F: Integer; begin Result := 3; end; SetX(F + F()); Write;", "X6.0\n"},
     {"procedure P(n: Integer); begin if n > 2 then exit; SetX(n); Write; end; begin P(1); P(5); end.", "X1.0\n"},
     {"const N = 3; W = N * 2.5; var a: array[0..N] of Integer; i: Integer;\n"
      "begin for i := 0 to N do a[i] := i * i; SetX(a[3] + W); Write; end.",
@@ -147,6 +148,8 @@ const Case kErrors[] = {
     {"SetComment('abc);", "t.pas:1:18: expected a closing ' (unterminated string)"},
     {"{ open comment", "t.pas:1:15: expected '}' closing the comment"},
     {"if 1 < 2 SetX(1);", "t.pas:1:10: expected 'then'"},
+    {"SetX(1);\nvar a: Integer;", "t.pas:2:1: expected every declaration (var, const, type, procedure, function) before the first statement"},
+    {"SetX(Foo());", "t.pas:1:6: unknown identifier `Foo`"},
     {"Foo(1);", "t.pas:1:1: unknown identifier `Foo`"},
     {"Writeln('x');", "t.pas:1:1: unknown identifier `Writeln`"},
     {"var x: Integer;\nx := 1.5;", "t.pas:2:6: type mismatch: assignment to `x` expects Integer, got Extended"},
