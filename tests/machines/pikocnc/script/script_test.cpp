@@ -130,6 +130,12 @@ const Case kBuiltins[] = {
     {"program Demo; var x: Extended; begin x := 1.5e3; SetF(x); SetS(12000.5); Write; end.", "F1500 S12000.5\n"},
     {"SetX(1); Write; SetX(MAT_SIZE_X + RUN_CNT); Write;", "X1.0\nX0.0\n"},
     {"Write; SetComment(''); Write;", "()\n"},
+    {"SetG(83); SetX(1); SetA(90); SetQ(2); SetR(-1); Write; SetG(0); SetZ(3); Write; SetX(GetZ); Write;",
+     "G83 X1.0 A90.0 R-1.0 Q2.0\nG0 Z3.0\nG0 X3.0\n"},
+    {"SetAngle(90); SetMoveR(10, -90); Write; SetMoveR(5, 90); Write; SetMove(2, 180); Write;", "X10.0 Y0.0\nX10.0 Y5.0\nX8.0 Y5.0\n"},
+    {"SetComment(IntToStr(Min(3, 2)) + FloatToStr(Max(1.5, 2)) + Chr(66) + IntToStr(Ord('A')) + IntToStr(Ord(Odd(3)))); Dbg_clr; Write;",
+     "(22B651)\n"},
+    {"var ln: TLine; begin ln.e.x := Exp(0); SetX(ln.e.x); Write; end.", "X1.0\n"},
 };
 
 TEST(ScriptBuiltins, Table) {
