@@ -4,7 +4,10 @@
 
 #include <fmt/format.h>
 
+#include <pthread.h>
+
 #include <cstdlib>
+#include <exception>
 
 #include "machines/pikocnc/script/builtins.hpp"
 #include "machines/pikocnc/script/ops.hpp"
@@ -12,9 +15,10 @@
 namespace pikocnc::script {
 
 namespace {
-// Stack the interpreter may use for nested script calls; well under the usual 8 MB main stack
-// even with sanitizer-sized frames.
-constexpr std::uintptr_t kStackBudget = 5u << 20;
+// Stack the interpreter may use for nested script calls: 5 MB on a caller's thread (the usual
+// main stack is 8 MB), most of its own 256 MB thread (run_script).
+constexpr std::size_t kThreadStack = std::size_t(256) << 20;
+thread_local std::uintptr_t stack_budget = 5u << 20;
 }  // namespace
 
 Interpreter::Interpreter(const Program& program, const RunInputs& inputs, std::ostream& gcode, std::ostream& diagnostics)
@@ -268,7 +272,7 @@ Value Interpreter::call(const Expr& e) {
   const char marker = 0;
   const std::uintptr_t here = reinterpret_cast<std::uintptr_t>(&marker);
   const std::uintptr_t used = here > stack_base_ ? here - stack_base_ : stack_base_ - here;
-  if (used > kStackBudget)
+  if (used > stack_budget)
     fail(e.pos, fmt::format("runaway recursion: the script's calls nest too deeply (calling `{}`)", r.name));
   Frame frame;
   frame.slots.reserve(r.locals.size());
@@ -295,9 +299,39 @@ Value Interpreter::call(const Expr& e) {
   return r.is_function ? std::move(frame.slots[0]) : Value{};
 }
 
+// The interpreter runs on a thread of its own with a large stack, so that the 1000 nested calls
+// the limit promises fit whatever the build (sanitizer frames are several times larger); only the
+// pages a script touches are ever committed.
 RunResult run_script(const Program& program, const RunInputs& inputs, std::ostream& gcode, std::ostream& diagnostics) {
-  Interpreter interpreter(program, inputs, gcode, diagnostics);
-  return interpreter.run();
+  struct Job {
+    const Program& program;
+    const RunInputs& inputs;
+    std::ostream& gcode;
+    std::ostream& diagnostics;
+    pthread_t caller;
+    RunResult result;
+    std::exception_ptr error;
+  } job{program, inputs, gcode, diagnostics, pthread_self(), {}, nullptr};
+  auto body = [](void* p) -> void* {
+    Job& j = *static_cast<Job*>(p);
+    if (pthread_self() != j.caller) stack_budget = kThreadStack - (std::size_t(16) << 20);
+    try {
+      Interpreter interpreter(j.program, j.inputs, j.gcode, j.diagnostics);
+      j.result = interpreter.run();
+    } catch (...) {
+      j.error = std::current_exception();
+    }
+    return nullptr;
+  };
+  pthread_attr_t attr;
+  pthread_t thread;
+  bool started = pthread_attr_init(&attr) == 0 && pthread_attr_setstacksize(&attr, kThreadStack) == 0 &&
+                 pthread_create(&thread, &attr, body, &job) == 0;
+  pthread_attr_destroy(&attr);
+  if (started) pthread_join(thread, nullptr);
+  else body(&job);  // no thread: run here, with the smaller budget still protecting the stack
+  if (job.error) std::rethrow_exception(job.error);
+  return job.result;
 }
 
 }  // namespace pikocnc::script
