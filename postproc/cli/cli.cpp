@@ -67,6 +67,7 @@ const std::vector<Subcommand>& subcommands() {
       explain_command(),
       plot_command(),
       verify_command(),
+      script_command(),
   };
   return all;
 }

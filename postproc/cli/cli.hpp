@@ -67,5 +67,6 @@ Subcommand test_command();
 Subcommand explain_command();
 Subcommand plot_command();
 Subcommand verify_command();
+Subcommand script_command();
 
 }  // namespace postproc::cli
