@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <streambuf>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "gppl/gppl.hpp"
 #include "machines/2xaxiscnc/reader.hpp"
 #include "machines/pikocnc/reader.hpp"
+#include "machines/pikocnc/script/script.hpp"
 #include "postproc/engine/engine.hpp"
 #include "postproc/engine/parameter_check.hpp"
 #include "prp/prp.hpp"
@@ -214,6 +216,23 @@ void twoaxis(std::string_view data) {
     if (++commands > 1'000'000) broken("a 2XAxisCNC program of bounded size gave more than a million commands");
 }
 
+void pikocnc_script(std::string_view data) {
+  // A stream buffer that throws the G-code away: a script may write a lot within its step budget.
+  struct Discard final : std::streambuf {
+    int overflow(int c) override { return c; }
+    std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+  } discard;
+  std::ostream nowhere(&discard);
+  pikocnc::script::RunInputs inputs;
+  inputs.max_steps = 20000;  // bounded: loops and recursion stop with an error, never hang
+  inputs.max_call_depth = 50;
+  inputs.default_answer = true;
+  try {
+    (void)pikocnc::script::run_script_text(data, "fuzz.pas", inputs, nowhere, nowhere);
+  } catch (const toolpath::InputError&) {
+  }
+}
+
 void pikocnc(std::string_view data) {
   pikocnc::Options options;
   options.dialect = !data.empty() && data.front() == ';' ? pikocnc::Dialect::V2016 : pikocnc::Dialect::V2025;
@@ -238,7 +257,7 @@ Entry entry(std::string_view target) {
   static constexpr Named kEntries[] = {
       {"trace_reader", trace_reader}, {"gppl_check", gppl_check}, {"gppl_run", gppl_run},
       {"display_format", display_format}, {"prp_loader", prp_loader}, {"pikocnc", pikocnc},
-      {"vmid", vmid}, {"twoaxis", twoaxis},
+      {"vmid", vmid}, {"twoaxis", twoaxis}, {"pikocnc_script", pikocnc_script},
   };
   for (const Named& n : kEntries)
     if (n.name == target) return n.entry;

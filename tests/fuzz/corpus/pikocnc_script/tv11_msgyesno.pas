@@ -1,0 +1,1 @@
+if MsgYesNo('Second pass?') then begin SetG(1); SetZ(-2); Write; end;

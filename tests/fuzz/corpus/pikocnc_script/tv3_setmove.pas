@@ -1,0 +1,1 @@
+SetG(1); SetMove(100.0, 90.0); Write;
