@@ -134,10 +134,11 @@ void Dialog::apply(const std::map<std::string, std::string>& overrides) {
     if (it == args_.end()) throw OpError(fmt::format("argument {} is not defined by the script (override `{}={}`)", num, key, raw));
     ArgDef& def = it->second;
     std::string text = raw;
+    const std::string& given = raw;  // a structured binding cannot be captured (C++20 before P1091 in clang 14)
     auto bad = [&](const char* want) {
       const char* kind = widget_name(def.widget);
       const char* article = kind[0] == 'i' ? "an" : "a";
-      return OpError(fmt::format("argument {} (`{}`) is {} {} field: `{}` is not {}", num, def.label, article, kind, raw, want));
+      return OpError(fmt::format("argument {} (`{}`) is {} {} field: `{}` is not {}", num, def.label, article, kind, given, want));
     };
     switch (def.widget) {
       case Widget::Float: {
