@@ -95,12 +95,43 @@ int ParameterCheck::kind_of(const toolpath::Parameter& p) {
   return it->second;
 }
 
+namespace {
+
+// kind_mismatch(kind, v).empty() without building a message: the per-parameter fast path (the
+// messages are made only for a value that fails).
+inline bool accepts(ParameterKind kind, const toolpath::Value& v) {
+  switch (kind) {
+    case ParameterKind::Numeric:
+      return v.kind == ValueKind::Integer || v.kind == ValueKind::Logical ||
+             (v.kind == ValueKind::Numeric && std::isfinite(v.numeric));
+    case ParameterKind::Integer:
+      return v.kind == ValueKind::Integer || v.kind == ValueKind::Logical || v.kind == ValueKind::Enum ||
+             (v.kind == ValueKind::Numeric && std::fabs(v.numeric) <= 999999999.0);
+    case ParameterKind::Logical:
+      return v.kind == ValueKind::Logical ||
+             ((v.kind == ValueKind::Integer || v.kind == ValueKind::Numeric) && zero_or_one(v));
+    case ParameterKind::String: return v.kind == ValueKind::String || v.kind == ValueKind::Enum;
+    case ParameterKind::Enum: return v.kind != ValueKind::String;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool ParameterCheck::next(toolpath::Command& out) {
   if (!inner_.next(out)) return false;
   if (!out.is_stream_command()) return true;  // what the original post did itself: kept as written
+  const auto& by_key = kinds_by_key();
   for (const toolpath::Parameter& p : out.parameters) {
-    const int kind = kind_of(p);
+    const int kind = p.key != toolpath::ParamKey::none ? by_key[static_cast<std::size_t>(p.key)] : kind_of(p);
     if (kind < 0) continue;
+    if (accepts(static_cast<ParameterKind>(kind), p.value)) {
+      // value_problem's two cases, decided here for the values that pass (nearly all of them)
+      if (p.key != toolpath::ParamKey::feed && p.key != toolpath::ParamKey::radius) continue;
+      if (p.value.kind != ValueKind::Numeric && p.value.kind != ValueKind::Integer) continue;
+      const double x = p.value.kind == ValueKind::Integer ? double(p.value.integer) : p.value.numeric;
+      if (p.key == toolpath::ParamKey::feed ? x >= 0 : x > 0) continue;
+    }
     std::string problem = kind_mismatch(static_cast<ParameterKind>(kind), p.value);
     if (problem.empty()) problem = value_problem(out, p);
     if (problem.empty()) continue;
