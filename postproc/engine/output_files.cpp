@@ -215,29 +215,58 @@ std::string OutputFiles::display_name(const Entry& e) const {
 
 std::string OutputFiles::current_name() const { return display_name(entries_[current_]); }
 
+// Two phases, so that a failure leaves every final name as it was: first each file is staged next
+// to its final name (rename, or copy when the temporary folder is on another file system: a full
+// disk fails here) and devices are written through; only then are the staged files renamed onto
+// their names, which within one folder cannot run out of space.
 std::vector<fs::path> OutputFiles::commit() {
   for (auto& e : entries_) close_handle(e);
   if (entries_.front().final_path.empty()) throw std::runtime_error("the main output file has no name");
-  std::vector<fs::path> written;
+  std::vector<std::pair<fs::path, fs::path>> staged;  // staged file -> final name
+  auto discard_staged = [&] {
+    std::error_code ignored;
+    for (const auto& s : staged) fs::remove(s.first, ignored);
+  };
+  std::vector<const Entry*> devices;
   for (auto& e : entries_) {
+    if (e.deleted) continue;
     std::error_code error;
-    if (e.deleted) {
-      fs::remove(e.final_path, error);
-      continue;
-    }
     if (e.final_path.has_parent_path()) fs::create_directories(e.final_path.parent_path(), error);
     if (fs::exists(e.final_path, error) && !fs::is_regular_file(e.final_path, error)) {
-      write_through(e.temp_path, e.final_path);  // a device or a pipe: replacing it would destroy it
-      written.push_back(e.final_path);
+      devices.push_back(&e);  // a device or a pipe: replacing it would destroy it
       continue;
     }
-    fs::rename(e.temp_path, e.final_path, error);
+    fs::path stage = e.final_path;
+    stage += ".postproc-new";
+    fs::rename(e.temp_path, stage, error);
     if (error) {
-      // Different file systems (the temporary folder may be elsewhere): copy, then remove.
-      fs::copy_file(e.temp_path, e.final_path, fs::copy_options::overwrite_existing, error);
-      if (error) throw std::runtime_error("cannot write `" + e.final_path.string() + "`: " + error.message());
+      error.clear();
+      fs::copy_file(e.temp_path, stage, fs::copy_options::overwrite_existing, error);
     }
-    written.push_back(e.final_path);
+    if (error) {
+      fs::remove(stage, error);
+      discard_staged();
+      throw std::runtime_error("cannot write `" + e.final_path.string() + "`: " + error.message());
+    }
+    staged.emplace_back(std::move(stage), e.final_path);
+  }
+  try {
+    for (const Entry* d : devices) write_through(d->temp_path, d->final_path);
+  } catch (...) {
+    discard_staged();
+    throw;
+  }
+  std::vector<fs::path> written;
+  for (const Entry* d : devices) written.push_back(d->final_path);
+  for (const auto& [stage, final_path] : staged) {
+    std::error_code error;
+    fs::rename(stage, final_path, error);
+    if (error) throw std::runtime_error("cannot write `" + final_path.string() + "`: " + error.message());
+    written.push_back(final_path);
+  }
+  for (auto& e : entries_) {
+    std::error_code ignored;
+    if (e.deleted) fs::remove(e.final_path, ignored);
   }
   committed_ = true;
   std::error_code ignored;

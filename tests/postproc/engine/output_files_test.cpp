@@ -94,6 +94,22 @@ TEST_F(OutputFilesTest, AFailedRunLeavesThePreviousFilesUntouched) {
   EXPECT_EQ(listing(), (std::vector<std::string>{"MAIN.TAP"}));
 }
 
+TEST_F(OutputFilesTest, ACommitThatCannotWriteOneFileWritesNone) {
+  std::ofstream(dir / "MAIN.TAP") << "old program\n";
+  std::ofstream(dir / "blocked") << "a file where the subprogram's folder should be\n";
+  {
+    OutputFiles out(dir);
+    out.set_main_path(dir / "MAIN.TAP");
+    out.write_line("new program");
+    out.execute({Verb::Open, "blocked/SUB.SPF"});
+    out.write_line("sub");
+    out.execute({Verb::Close, "blocked/SUB.SPF"});
+    EXPECT_THROW(out.commit(), std::runtime_error);
+  }  // the run ends with the error: its temporaries go
+  EXPECT_EQ(slurp(dir / "MAIN.TAP"), "old program\n");  // the main file came first and is untouched
+  EXPECT_EQ(listing(), (std::vector<std::string>{"MAIN.TAP", "blocked"}));
+}
+
 TEST_F(OutputFilesTest, CommitReplacesTheOldFileAndRemovesDeletedOnes) {
   std::ofstream(dir / "MAIN.TAP") << "old program\n";
   std::ofstream(dir / "STALE.SPF") << "stale\n";
