@@ -176,6 +176,14 @@ private:
     return false;
   }
 
+  // The value a <Param> starts at: its Value, or DefaultValue when Value is empty (user parameters
+  // and cycle parameters alike); nullopt after an error.
+  std::optional<toolpath::Value> param_value(pugi::xml_node param, VarType type) {
+    pugi::xml_attribute value = param.attribute("Value");
+    if (!value || !*value.value()) value = param.attribute("DefaultValue");
+    return user_value(type, param.attribute("ValueType").value(), value.value(), at(value, param));
+  }
+
   // A user parameter's value by ValueType; nullopt after an error.
   std::optional<toolpath::Value> user_value(VarType type, std::string_view value_type, std::string_view t,
                                             const toolpath::SourcePosition& where) {
@@ -237,10 +245,8 @@ private:
         auto name = gpp_name(param);
         if (!name) continue;
         const VarType type = param_type(param);
-        pugi::xml_attribute value = param.attribute("Value");
-        if (!value || !*value.value()) value = param.attribute("DefaultValue");
         auto where = at(param.attribute("GppName"), param);
-        auto initial = user_value(type, param.attribute("ValueType").value(), value.value(), at(value, param));
+        auto initial = param_value(param, type);
         if (!initial) continue;
         if (std::string_view(param.attribute("IsStateActive").value()) == "0") initial.reset();
         if (!declared(by, *name)) {
@@ -295,9 +301,7 @@ private:
       auto p = gpp_name(param);
       if (!p) return;
       const VarType type = param_type(param);
-      pugi::xml_attribute value = param.attribute("Value");
-      if (!value || !*value.value()) value = param.attribute("DefaultValue");
-      auto initial = user_value(type, param.attribute("ValueType").value(), value.value(), at(value, param));
+      auto initial = param_value(param, type);
       if (!initial) return;
       params.push_back({*p, type, at(param.attribute("GppName"), param), std::move(*initial)});
       r.params.push_back(*p);
