@@ -43,13 +43,38 @@ bool zero_or_one(const toolpath::Value& v) {
 }
 
 // Values of the right type that still make no motion: a negative feed, an arc without a radius.
+// True when `p` is none of those (cheap: the check's fast path asks it for every parameter).
+inline bool in_range(const toolpath::Parameter& p) {
+  if (p.key != toolpath::ParamKey::feed && p.key != toolpath::ParamKey::radius) return true;
+  if (p.value.kind != ValueKind::Numeric && p.value.kind != ValueKind::Integer) return true;
+  const double x = p.value.kind == ValueKind::Integer ? double(p.value.integer) : p.value.numeric;
+  return p.key == toolpath::ParamKey::feed ? x >= 0 : x > 0;
+}
+
 std::string value_problem(const toolpath::Command& c, const toolpath::Parameter& p) {
-  if (p.value.kind != ValueKind::Numeric && p.value.kind != ValueKind::Integer) return {};
-  const double x = p.value.as_number();
-  if (p.key == toolpath::ParamKey::feed && x < 0) return fmt::format("expected a feed of 0 or more, not {}", shown(p.value));
-  if (p.key == toolpath::ParamKey::radius && x <= 0 && toolpath::iequals(c.name, "@arc"))
-    return fmt::format("expected an arc radius above 0, not {}", shown(p.value));
-  return {};
+  if (in_range(p)) return {};
+  if (p.key == toolpath::ParamKey::feed) return fmt::format("expected a feed of 0 or more, not {}", shown(p.value));
+  if (toolpath::iequals(c.name, "@arc")) return fmt::format("expected an arc radius above 0, not {}", shown(p.value));
+  return {};  // a radius of 0 on another command is not an arc without a radius
+}
+
+// kind_mismatch(kind, v).empty() without building a message: the per-parameter fast path (the
+// messages are made only for a value that fails).
+inline bool accepts(ParameterKind kind, const toolpath::Value& v) {
+  switch (kind) {
+    case ParameterKind::Numeric:
+      return v.kind == ValueKind::Integer || v.kind == ValueKind::Logical ||
+             (v.kind == ValueKind::Numeric && std::isfinite(v.numeric));
+    case ParameterKind::Integer:
+      return v.kind == ValueKind::Integer || v.kind == ValueKind::Logical || v.kind == ValueKind::Enum ||
+             (v.kind == ValueKind::Numeric && std::fabs(v.numeric) <= 999999999.0);
+    case ParameterKind::Logical:
+      return v.kind == ValueKind::Logical ||
+             ((v.kind == ValueKind::Integer || v.kind == ValueKind::Numeric) && zero_or_one(v));
+    case ParameterKind::String: return v.kind == ValueKind::String || v.kind == ValueKind::Enum;
+    case ParameterKind::Enum: return v.kind != ValueKind::String;
+  }
+  return true;
 }
 
 }  // namespace
@@ -84,8 +109,7 @@ std::string kind_mismatch(ParameterKind kind, const toolpath::Value& v) {
 ParameterCheck::ParameterCheck(toolpath::CommandSource& inner, std::string file_name)
     : inner_(inner), file_(std::move(file_name)) {}
 
-int ParameterCheck::kind_of(const toolpath::Parameter& p) {
-  if (p.key != toolpath::ParamKey::none) return kinds_by_key()[static_cast<std::size_t>(p.key)];
+int ParameterCheck::unkeyed_kind(const toolpath::Parameter& p) {
   auto it = unkeyed_.find(p.name);
   if (it == unkeyed_.end()) {
     if (unkeyed_.size() > 4096) unkeyed_.clear();  // a stream of ever new names: keep memory flat
@@ -95,43 +119,14 @@ int ParameterCheck::kind_of(const toolpath::Parameter& p) {
   return it->second;
 }
 
-namespace {
-
-// kind_mismatch(kind, v).empty() without building a message: the per-parameter fast path (the
-// messages are made only for a value that fails).
-inline bool accepts(ParameterKind kind, const toolpath::Value& v) {
-  switch (kind) {
-    case ParameterKind::Numeric:
-      return v.kind == ValueKind::Integer || v.kind == ValueKind::Logical ||
-             (v.kind == ValueKind::Numeric && std::isfinite(v.numeric));
-    case ParameterKind::Integer:
-      return v.kind == ValueKind::Integer || v.kind == ValueKind::Logical || v.kind == ValueKind::Enum ||
-             (v.kind == ValueKind::Numeric && std::fabs(v.numeric) <= 999999999.0);
-    case ParameterKind::Logical:
-      return v.kind == ValueKind::Logical ||
-             ((v.kind == ValueKind::Integer || v.kind == ValueKind::Numeric) && zero_or_one(v));
-    case ParameterKind::String: return v.kind == ValueKind::String || v.kind == ValueKind::Enum;
-    case ParameterKind::Enum: return v.kind != ValueKind::String;
-  }
-  return true;
-}
-
-}  // namespace
-
 bool ParameterCheck::next(toolpath::Command& out) {
   if (!inner_.next(out)) return false;
   if (!out.is_stream_command()) return true;  // what the original post did itself: kept as written
   const auto& by_key = kinds_by_key();
   for (const toolpath::Parameter& p : out.parameters) {
-    const int kind = p.key != toolpath::ParamKey::none ? by_key[static_cast<std::size_t>(p.key)] : kind_of(p);
+    const int kind = p.key != toolpath::ParamKey::none ? by_key[static_cast<std::size_t>(p.key)] : unkeyed_kind(p);
     if (kind < 0) continue;
-    if (accepts(static_cast<ParameterKind>(kind), p.value)) {
-      // value_problem's two cases, decided here for the values that pass (nearly all of them)
-      if (p.key != toolpath::ParamKey::feed && p.key != toolpath::ParamKey::radius) continue;
-      if (p.value.kind != ValueKind::Numeric && p.value.kind != ValueKind::Integer) continue;
-      const double x = p.value.kind == ValueKind::Integer ? double(p.value.integer) : p.value.numeric;
-      if (p.key == toolpath::ParamKey::feed ? x >= 0 : x > 0) continue;
-    }
+    if (accepts(static_cast<ParameterKind>(kind), p.value) && in_range(p)) continue;
     std::string problem = kind_mismatch(static_cast<ParameterKind>(kind), p.value);
     if (problem.empty()) problem = value_problem(out, p);
     if (problem.empty()) continue;

@@ -25,8 +25,9 @@ public:
   bool next(toolpath::Command& out) override;
 
 private:
-  // The catalogue kind of a parameter, or -1 when it is not in the catalogue.
-  int kind_of(const toolpath::Parameter& p);
+  // The catalogue kind of a parameter without an interned key (keyed ones are one table index),
+  // or -1 when it is not in the catalogue.
+  int unkeyed_kind(const toolpath::Parameter& p);
 
   toolpath::CommandSource& inner_;
   std::string file_;
