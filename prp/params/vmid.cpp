@@ -166,7 +166,7 @@ private:
         return true;
       case VmidValue::GenProcs:
         if (t == "0" || t == "1") {
-          p.text = t == "1" ? "Y" : "N";
+          p.text.assign(1, t == "1" ? 'Y' : 'N');  // one char: GCC 12's -Wrestrict misfires on `= "Y"` here
           return true;
         }
         loader_.warning_at(p.where, fmt::format("GenProc=\"{}\" is not a code we know (0: N, 1: Y): gen_procs keeps "
