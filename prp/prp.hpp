@@ -207,16 +207,19 @@ NumberRange procedure_numbers(const MachineParameters& params);
 
 // A command the filters cannot process as the PRP asks (a drill cycle that cannot be expanded, a
 // malformed @arc, a label beyond proc_num_max). what(): "command N (@name): message", N being the
-// command's position in the input stream; the engine adds the toolpath file name.
+// command's position in the input stream; the engine puts the toolpath file and the line of the
+// command's header (line()) in front.
 class StreamError : public std::runtime_error {
 public:
   StreamError(const toolpath::Command& command, const std::string& message);
   std::size_t command_index() const { return index_; }
   const std::string& command_name() const { return name_; }
   const std::string& message() const { return message_; }
+  std::uint32_t line() const { return line_; }  // the command's header line in the input (0: unknown)
 
 private:
   std::size_t index_;
+  std::uint32_t line_;
   std::string name_;
   std::string message_;
 };

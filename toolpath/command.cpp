@@ -38,6 +38,7 @@ void Command::clear() {
   name.clear();
   index = 0;
   depth = 1;
+  line = 0;
   parameters.clear();
   trace.clear();
 }

@@ -55,6 +55,9 @@ struct Command {
   std::string name;        // with the leading '@'
   std::size_t index = 0;   // position in the stream, from 0
   int depth = 1;           // 1: handled by the post; 0: no procedure; 2+: an internal call of the post
+  // The line of its header in the trace (1-based; 0 when a model or a generator made it), so that
+  // errors found downstream (filters, the post) still point into the file.
+  std::uint32_t line = 0;
   std::vector<Parameter> parameters;
   std::vector<TraceLine> trace;
 
@@ -86,12 +89,17 @@ struct Command {
     name.swap(other.name);
     std::swap(index, other.index);
     std::swap(depth, other.depth);
+    std::swap(line, other.line);
     parameters.swap(other.parameters);
     trace.swap(other.trace);
   }
   friend void swap(Command& a, Command& b) noexcept { a.swap(b); }
 
-  friend bool operator==(const Command&, const Command&) = default;
+  // The same command wherever it was read (like Parameter, the position is not compared).
+  friend bool operator==(const Command& a, const Command& b) {
+    return a.name == b.name && a.index == b.index && a.depth == b.depth && a.parameters == b.parameters &&
+           a.trace == b.trace;
+  }
 };
 
 }  // namespace toolpath

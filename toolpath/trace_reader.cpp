@@ -1,5 +1,6 @@
 #include "toolpath/trace_reader.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstdint>
@@ -100,6 +101,7 @@ bool TraceReader::next(Command& out) {
     fail(col, "expected a command header `(N)@name` or `@name`");
   }
   out.index = next_index_++;
+  out.line = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
   bool first = true;
   while (read_line()) {
     std::size_t i = skip_blanks(line_, 0);

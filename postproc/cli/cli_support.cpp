@@ -93,9 +93,10 @@ Input Input::open(const std::string& path) {
   return in;
 }
 
-RunOptions run_options(const Input& input) {
+RunOptions run_options(const Input& input, std::ostream& warnings) {
   RunOptions o;
   o.input_name = input.path;
+  o.warnings = &warnings;
   std::string path = input.path;
   o.reopen = [path]() -> std::unique_ptr<toolpath::CommandSource> { return toolpath::TraceReader::open(path); };
   return o;

@@ -38,7 +38,7 @@ struct Input {
 };
 
 // Run options for `input`: messages name it, and the engine may reopen it.
-RunOptions run_options(const Input& input);
+RunOptions run_options(const Input& input, std::ostream& warnings);
 
 // A one-line progress bar on stderr, only when stderr is a terminal and --quiet was not given.
 class Progress {

@@ -50,7 +50,7 @@ int run_explain(const Arguments& args, std::ostream& out, std::ostream& err) {
   Input input = Input::open(args.positional()[0]);
   OutputFiles files(".", OutputFiles::LineEnd::LF, true);
   Explainer explainer(out, std::filesystem::path(engine_opts.post).filename().string());
-  RunOptions options = run_options(input);
+  RunOptions options = run_options(input, err);
   options.observer = &explainer;
   Progress progress(err, args.has("--quiet"), input);
   options.progress = [&](std::size_t n) { progress.update(n); };

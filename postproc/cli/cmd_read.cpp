@@ -55,10 +55,13 @@ std::unique_ptr<toolpath::CommandSource> open_source(const std::string& path, co
     struct Checked final : toolpath::CommandSource {  // catalogue types checked where they are read
       std::unique_ptr<toolpath::TraceReader> reader;
       postproc::ParameterCheck check;
-      Checked(std::unique_ptr<toolpath::TraceReader> r, const std::string& name) : reader(std::move(r)), check(*reader, name) {}
+      Checked(std::unique_ptr<toolpath::TraceReader> r, const std::string& name, std::ostream& warnings)
+          : reader(std::move(r)), check(*reader, name, [&warnings](const toolpath::SourcePosition& at, const std::string& m) {
+              warnings << fmt::format("{}:{}:{}: warning: {}\n", at.file, at.line, at.column, m);
+            }) {}
       bool next(toolpath::Command& out) override { return check.next(out); }
     };
-    return std::make_unique<Checked>(toolpath::TraceReader::open(path), path);
+    return std::make_unique<Checked>(toolpath::TraceReader::open(path), path, warnings);
   }
   if (dialect == "2xaxiscnc") return open_twoaxis(path, warnings);
   const auto piko = pikocnc::parse_dialect(dialect);

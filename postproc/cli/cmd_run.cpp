@@ -30,7 +30,7 @@ int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
   RunSummary summary;
   if (dialect == "trace") {
     Input input = Input::open(args.positional()[0]);
-    RunOptions options = run_options(input);
+    RunOptions options = run_options(input, err);
     options.main_path = main_path;
     Progress progress(err, quiet, input);
     options.progress = [&](std::size_t n) { progress.update(n); };
@@ -41,6 +41,7 @@ int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
     RunOptions options;
     options.input_name = args.positional()[0];
     options.main_path = main_path;
+    options.warnings = &err;
     summary = engine.run(*source, files, options);
   }
   if (to.to_stdout) {

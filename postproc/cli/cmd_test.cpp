@@ -63,7 +63,7 @@ int update_golden(const Engine& engine, Input& input, const std::string& expect,
   Destination to = Destination::parse(folder && expect.back() != '/' ? expect + "/" : expect);
   std::filesystem::create_directories(to.directory);
   OutputFiles files(to.directory);
-  RunOptions options = run_options(input);
+  RunOptions options = run_options(input, err);
   options.main_path = [&](const std::string& default_name) -> std::filesystem::path {
     return to.main_file.empty() ? to.directory / default_name : to.main_file;
   };
@@ -106,7 +106,7 @@ int run_test(const Arguments& args, std::ostream& out, std::ostream& err) {
   feeder.main_name_ = main_key;
 
   OutputFiles files(".", OutputFiles::LineEnd::LF, true);  // nothing is written to disk
-  RunOptions options = run_options(input);
+  RunOptions options = run_options(input, err);
   options.observer = &feeder;
   Progress progress(err, quiet, input);
   options.progress = [&](std::size_t n) { progress.update(n); };

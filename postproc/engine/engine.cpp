@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -64,6 +65,31 @@ std::string default_main_name(const std::string& g_file_name, const std::string&
   return name;
 }
 
+// Warnings about the stream, from the reading thread and the filters' thread: one lock keeps the
+// lines whole, and a damaged job says the first hundred things, not a million.
+class StreamWarnings {
+public:
+  StreamWarnings(std::ostream* out, std::string input) : out_(out), input_(std::move(input)) {}
+  ~StreamWarnings() {
+    if (out_ && shown_ > kShown) *out_ << fmt::format("{}: {} more warnings not shown\n", input_, shown_ - kShown);
+  }
+
+  void operator()(std::uint32_t line, const std::string& message) {
+    if (!out_) return;
+    std::lock_guard lock(mutex_);
+    if (++shown_ > kShown) return;
+    if (line) *out_ << fmt::format("{}:{}:1: warning: {}\n", input_, line, message);
+    else *out_ << fmt::format("{}: warning: {}\n", input_, message);
+  }
+
+private:
+  static constexpr std::size_t kShown = 100;
+  std::ostream* out_;
+  std::string input_;
+  std::mutex mutex_;
+  std::size_t shown_ = 0;
+};
+
 class Session {
 public:
   Session(const Engine& engine, std::shared_ptr<const gppl::Program> program, OutputFiles& files,
@@ -119,14 +145,19 @@ public:
     // its own because a filter may have to take in the whole job before it hands anything on
     // (gen_procs: @start_of_file names the last subroutine label).
     StreamCommands stream(input);
-    ParameterCheck checked(stream, options_.input_name);  // wrong values stop at their own position
+    StreamWarnings warnings(options_.warnings, options_.input_name);
+    // Wrong values stop at their own position; a command without what it needs at its header.
+    ParameterCheck checked(stream, options_.input_name,
+                           [&](const toolpath::SourcePosition& at, const std::string& m) { warnings(static_cast<std::uint32_t>(at.line), m); });
     // The PRP half follows the job's unit system, which the first command states; it must be
     // chosen before the filters compare anything against the PRP's tolerances.
     toolpath::LookaheadSource first(checked);
     summary.units = engine_.options().units.value_or(job_units(first.peek()));
     machine_ = &engine_.machine(summary.units);
     toolpath::PrefetchSource read_ahead(first);
-    auto filtered = prp::build_filter_chain(*machine_, read_ahead);
+    auto filtered = prp::build_filter_chain(*machine_, read_ahead, [&](const toolpath::Command& c, const std::string& m) {
+      warnings(c.line, fmt::format("command #{} {}: {}", c.index, c.name, m));
+    });
     toolpath::PrefetchSource prefetched(*filtered);
     // Three commands in rotation: the one before (its name is prev_command), the current one and
     // the one after it (next_command, read before the current one runs): no name is copied.
@@ -137,7 +168,7 @@ public:
     toolpath::Command* spare = &rotation[2];
     for (bool more = prefetched.next(*current); more;) {
       ++summary.commands;
-      sink_.begin_command(current->index, current->name);
+      sink_.begin_command(current->index, current->name, current->line);
       more = prefetched.next(*following);
       guarded([&] {
         execute(*current, previous ? std::string_view(previous->name) : std::string_view{},
@@ -188,11 +219,18 @@ private:
     }
   }
 
+  // The command being run, as `command #N @name`, after the input position of its header when
+  // it has one: `job.trace:58:1: command #13 @arc`.
+  std::string command_here() const {
+    std::string command = fmt::format("command #{} {}", sink_.command_index, sink_.command_name);
+    return sink_.command_line ? fmt::format("{}:{}:1: {}", options_.input_name, sink_.command_line, command)
+                              : command;
+  }
+
   [[noreturn]] void fail(const std::string& what) const {
-    std::string where = sink_.command_name.empty()
-                            ? std::string("at the end of the run")
-                            : fmt::format("command #{} {}", sink_.command_index, sink_.command_name);
-    throw RunError(fmt::format("{}: {}: {}", options_.input_name, where, what));
+    if (sink_.command_name.empty()) throw RunError(fmt::format("{}: at the end of the run: {}", options_.input_name, what));
+    if (sink_.command_line) throw RunError(fmt::format("{}: {}", command_here(), what));
+    throw RunError(fmt::format("{}: {}: {}", options_.input_name, command_here(), what));
   }
 
   std::string input_stem() const {
@@ -372,7 +410,14 @@ std::vector<std::string> Engine::drill_cycle_names() const {
 
 RunSummary Engine::run(toolpath::CommandSource& input, OutputFiles& output, const RunOptions& options) const {
   Session session(*this, program_, output, options);
-  return session.run(input);
+  try {
+    return session.run(input);
+  } catch (const prp::StreamError& e) {
+    // A command the PRP's filters cannot take: point at its header in the input.
+    const std::string what = fmt::format("command #{} {}: {}", e.command_index(), e.command_name(), e.message());
+    if (e.line()) throw toolpath::InputError({options.input_name, e.line(), 1}, what);
+    throw RunError(fmt::format("{}: {}", options.input_name, what));
+  }
 }
 
 }  // namespace postproc

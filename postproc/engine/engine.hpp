@@ -75,6 +75,9 @@ struct RunOptions {
   std::function<std::filesystem::path(const std::string& default_name)> main_path;
   LineObserver* observer = nullptr;
   std::ostream* trace = nullptr;  // the post's `trace` output and the commands skipped
+  // Warnings about the stream (`job.trace:12:1: warning: ...`): a parameter a command should carry
+  // and does not, a command the PRP does not expect. nullptr: discarded.
+  std::ostream* warnings = nullptr;
   std::function<void(std::size_t commands)> progress;  // called every 4096 commands
   // Called with each command as its procedure is about to run: after the PRP filters and with the
   // structure the engine completes (`postproc verify` models the motion from these).

@@ -22,9 +22,10 @@ public:
   void write_line(std::string_view line, const gppl::LineOrigin& origin) override;
 
   // Called when a command starts (lines are attributed to the command that started them).
-  void begin_command(std::size_t index, std::string_view name) {
+  void begin_command(std::size_t index, std::string_view name, std::uint32_t line) {
     command_index = index;
     command_name = name;
+    command_line = line;
     wrote_in_command_ = false;
     if (opener_name_.empty()) {
       opener_index_ = index;
@@ -49,6 +50,7 @@ public:
 
   std::size_t command_index = 0;
   std::string_view command_name;
+  std::uint32_t command_line = 0;  // of the command's header in the input (0: not read from a file)
   std::size_t lines = 0;
 
 private:

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
 
 #include "toolpath/error.hpp"
@@ -77,6 +78,60 @@ inline bool accepts(ParameterKind kind, const toolpath::Value& v) {
   return true;
 }
 
+// What a motion command cannot do without. SolidCAM writes every parameter of a command into the
+// trace each time (unchanged ones flagged `F`), so a motion without its end point, feed or centre
+// comes from a damaged or hand-made trace.
+enum Need : std::uint32_t { kX = 1, kY = 2, kZ = 4, kFeed = 8, kDirection = 16, kCentre = 32, kTool = 64 };
+constexpr int kNeeds = 7;
+constexpr std::string_view kNeedNames[kNeeds] = {
+    "`xpos`", "`ypos`", "`zpos`", "`feed`", "`arc_direction`",
+    "centre (`xcenter` and `ycenter`, or `xcenter_rel` and `ycenter_rel`)", "`tool_number`"};
+
+struct Required {
+  std::string_view command;
+  std::uint32_t needs;
+};
+constexpr Required kRequired[] = {
+    {"@rapid_move", kX | kY | kZ},
+    {"@line", kX | kY | kZ | kFeed},
+    {"@arc", kX | kY | kZ | kFeed | kDirection | kCentre},
+    {"@drill_point", kX | kY | kZ},
+    {"@change_tool", kTool},
+};
+
+int required_of(std::string_view name) {
+  for (int i = 0; i < int(std::size(kRequired)); ++i)
+    if (name.size() == kRequired[i].command.size() && toolpath::iequals(name, kRequired[i].command)) return i;
+  return -1;
+}
+
+// The Need bit each keyed parameter stands for (the centre counts in halves, put together below).
+enum Half : std::uint32_t { kXcentre = 128, kYcentre = 256, kXrel = 512, kYrel = 1024 };
+const std::array<std::uint16_t, toolpath::param_key_count + 1>& need_by_key() {
+  static const auto table = [] {
+    std::array<std::uint16_t, toolpath::param_key_count + 1> t{};
+    using K = toolpath::ParamKey;
+    const std::pair<K, std::uint32_t> bits[] = {{K::xpos, kX},          {K::ypos, kY},           {K::zpos, kZ},
+                                                {K::feed, kFeed},       {K::arc_direction, kDirection},
+                                                {K::xcenter, kXcentre}, {K::ycenter, kYcentre},  {K::xcenter_rel, kXrel},
+                                                {K::ycenter_rel, kYrel}, {K::tool_number, kTool}};
+    for (auto [key, bit] : bits) t[static_cast<std::size_t>(key)] = static_cast<std::uint16_t>(bit);
+    return t;
+  }();
+  return table;
+}
+
+std::string need_list(std::uint32_t needs) {
+  std::string list;
+  int left = std::popcount(needs);
+  for (int b = 0; b < kNeeds; ++b) {
+    if (!(needs & (1u << b))) continue;
+    --left;
+    list += fmt::format("{}{}", list.empty() ? "" : left == 0 ? " and " : ", ", b == 5 ? "a centre" : kNeedNames[b]);
+  }
+  return list;
+}
+
 }  // namespace
 
 std::string kind_mismatch(ParameterKind kind, const toolpath::Value& v) {
@@ -106,8 +161,8 @@ std::string kind_mismatch(ParameterKind kind, const toolpath::Value& v) {
   return {};
 }
 
-ParameterCheck::ParameterCheck(toolpath::CommandSource& inner, std::string file_name)
-    : inner_(inner), file_(std::move(file_name)) {}
+ParameterCheck::ParameterCheck(toolpath::CommandSource& inner, std::string file_name, Warn warn)
+    : inner_(inner), file_(std::move(file_name)), warn_(std::move(warn)) {}
 
 int ParameterCheck::unkeyed_kind(const toolpath::Parameter& p) {
   auto it = unkeyed_.find(p.name);
@@ -123,8 +178,12 @@ bool ParameterCheck::next(toolpath::Command& out) {
   if (!inner_.next(out)) return false;
   if (!out.is_stream_command()) return true;  // what the original post did itself: kept as written
   const auto& by_key = kinds_by_key();
+  const auto& needs = need_by_key();
+  std::uint32_t present = 0;
   for (const toolpath::Parameter& p : out.parameters) {
-    const int kind = p.key != toolpath::ParamKey::none ? by_key[static_cast<std::size_t>(p.key)] : unkeyed_kind(p);
+    const auto k = static_cast<std::size_t>(p.key);
+    present |= needs[k];
+    const int kind = p.key != toolpath::ParamKey::none ? by_key[k] : unkeyed_kind(p);
     if (kind < 0) continue;
     if (accepts(static_cast<ParameterKind>(kind), p.value) && in_range(p)) continue;
     std::string problem = kind_mismatch(static_cast<ParameterKind>(kind), p.value);
@@ -133,7 +192,38 @@ bool ParameterCheck::next(toolpath::Command& out) {
     throw toolpath::InputError({file_, p.line, p.column},
                                fmt::format("parameter `{}` of {}: {}", p.name, out.name, problem));
   }
+  if (((present & kXcentre) && (present & kYcentre)) || ((present & kXrel) && (present & kYrel))) present |= kCentre;
+  // Only what was read from a trace: a controller model's stream (2XAxisCNC has no Z) or a
+  // generated one carries what its machine has.
+  if (out.line != 0) check_required(out, present);
+  given_ |= present;
   return true;
+}
+
+void ParameterCheck::check_required(const toolpath::Command& c, std::uint32_t present) {
+  const int r = required_of(c.name);
+  if (r < 0) return;
+  const std::uint32_t lacking = kRequired[r].needs & ~present;
+  if (!lacking) return;
+  const std::uint32_t need = kRequired[r].needs;
+  if (const std::uint32_t never = lacking & ~given_) {
+    const int bit = std::countr_zero(never);
+    throw toolpath::InputError({file_, c.line, 1},
+                               fmt::format("{} has no {}, and no command before it gave one: expected {}, which a "
+                                           "trace gives with every {}",
+                                           c.name, kNeedNames[bit], need_list(need), c.name));
+  }
+  // Taken over from an earlier command, as the post's variables would: said once per pair.
+  for (int bit = 0; bit < kNeeds; ++bit) {
+    if (!(lacking & (1u << bit))) continue;
+    const std::uint64_t pair = std::uint64_t{1} << (r * kNeeds + bit);
+    if (warned_ & pair) continue;
+    warned_ |= pair;
+    if (warn_)
+      warn_({file_, c.line, 1}, fmt::format("{} has no {}: the last one given stays (a trace gives {} with every {}; "
+                                            "further {} commands without it are not reported)",
+                                            c.name, kNeedNames[bit], need_list(need), c.name, c.name));
+  }
 }
 
 }  // namespace postproc

@@ -5,11 +5,13 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 
 #include "postproc/engine/parameter_table.hpp"
+#include "toolpath/error.hpp"
 #include "toolpath/source.hpp"
 
 namespace postproc {
@@ -18,13 +20,20 @@ namespace postproc {
 // when the post variable takes it as it is or by an exact conversion.
 std::string kind_mismatch(ParameterKind kind, const toolpath::Value& value);
 
+// Also holds each motion command read from a trace (the commands with a header line) to the
+// parameters it cannot do without (`xpos ypos zpos` of `@rapid_move`, the centre of `@arc`, ...):
+// one that no command of the stream has given yet is an error, since the post would invent it;
+// one given before is taken over from there, with a warning (once per command and parameter).
 class ParameterCheck final : public toolpath::CommandSource {
 public:
+  using Warn = std::function<void(const toolpath::SourcePosition& where, const std::string& message)>;
   // `file_name` names the input in errors; `inner` must outlive the check.
-  ParameterCheck(toolpath::CommandSource& inner, std::string file_name);
+  ParameterCheck(toolpath::CommandSource& inner, std::string file_name, Warn warn = {});
   bool next(toolpath::Command& out) override;
 
 private:
+  void check_required(const toolpath::Command& c, std::uint32_t present);
+
   // The catalogue kind of a parameter without an interned key (keyed ones are one table index),
   // or -1 when it is not in the catalogue.
   int unkeyed_kind(const toolpath::Parameter& p);
@@ -32,6 +41,9 @@ private:
   toolpath::CommandSource& inner_;
   std::string file_;
   std::unordered_map<std::string, int> unkeyed_;  // names outside the key list, looked up once
+  Warn warn_;
+  std::uint32_t given_ = 0;   // the required parameters some command has carried (bits of Need)
+  std::uint64_t warned_ = 0;  // (command, parameter) pairs already warned about
 };
 
 }  // namespace postproc

@@ -8,8 +8,9 @@
 namespace prp {
 namespace {
 
-// Record layout: a u32 payload length, then the payload: name, index, depth, the parameters (name,
-// kind and flag in one byte, then only the field of that kind), the trace lines. Texts are a u32
+// Record layout: a u32 payload length, then the payload: name, index, depth, line, the parameters
+// (name, kind and flag in one byte, then only the field of that kind, then line and column), the
+// trace lines. Texts are a u32
 // length and the bytes. A parameter name is a u16: its ParamKey when the name is spelled exactly as
 // the catalogue spells it (no hashing when it is read back), else 0 and the name as text.
 constexpr std::size_t kBlock = std::size_t{1} << 20;
@@ -36,8 +37,8 @@ private:
 
 // The largest record a command can make.
 std::size_t bound(const toolpath::Command& c) {
-  std::size_t n = 4 + 4 + c.name.size() + 8 + 4 + 4 + 4;
-  for (const auto& p : c.parameters) n += 2 + 4 + p.name.size() + 1 + 8 + p.value.text.size() + 4;
+  std::size_t n = 4 + 4 + c.name.size() + 8 + 4 + 4 + 4 + 4;
+  for (const auto& p : c.parameters) n += 2 + 4 + p.name.size() + 1 + 8 + p.value.text.size() + 4 + 8;
   for (const auto& t : c.trace) n += 1 + 4 + t.text.size();
   return n;
 }
@@ -95,6 +96,7 @@ std::int64_t CommandSpool::write(const toolpath::Command& c) {
   w.text(c.name);
   w.put(static_cast<std::uint64_t>(c.index));
   w.put(static_cast<std::int32_t>(c.depth));
+  w.put(c.line);  // positions travel with the job, for errors found when it is posted
   w.put(static_cast<std::uint32_t>(c.parameters.size()));
   for (const auto& p : c.parameters) {
     if (p.key != toolpath::ParamKey::none && p.name == toolpath::param_name(p.key)) {
@@ -112,6 +114,8 @@ std::int64_t CommandSpool::write(const toolpath::Command& c) {
       case toolpath::ValueKind::String:
       case toolpath::ValueKind::Enum: w.text(v.text); break;
     }
+    w.put(p.line);
+    w.put(p.column);
   }
   w.put(static_cast<std::uint32_t>(c.trace.size()));
   for (const auto& t : c.trace) {
@@ -167,6 +171,7 @@ bool CommandSpool::read(toolpath::Command& out) {
   in.text(out.name);
   out.index = static_cast<std::size_t>(in.get<std::uint64_t>());
   out.depth = in.get<std::int32_t>();
+  out.line = in.get<std::uint32_t>();
   out.parameters.resize(in.get<std::uint32_t>());
   for (auto& p : out.parameters) {
     if (const auto code = in.get<std::uint16_t>(); code != 0) {
@@ -192,6 +197,8 @@ bool CommandSpool::read(toolpath::Command& out) {
       case toolpath::ValueKind::String:
       case toolpath::ValueKind::Enum: in.text(v.text); break;
     }
+    p.line = in.get<std::uint32_t>();
+    p.column = in.get<std::uint32_t>();
   }
   out.trace.resize(in.get<std::uint32_t>());
   for (auto& t : out.trace) {

@@ -106,6 +106,7 @@ void DrillExpansion::expand_hole(const toolpath::Command& point) {
     toolpath::Command c;
     c.name = "@delay";
     c.index = point.index;
+    c.line = point.line;
     c.parameters.push_back({"delay_period", toolpath::Value::make_numeric(*dwell_)});
     pending_.push_back(std::move(c));
   };

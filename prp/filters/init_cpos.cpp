@@ -38,6 +38,7 @@ bool InitCpos::next(toolpath::Command& out) {
         out.clear();
         out.name = "@init_cpos";
         out.index = held_.index;
+        out.line = held_.line;
         out.set("prev_cpos", toolpath::Value::make_numeric(*cpos_));
         out.set("best_cpos", toolpath::Value::make_numeric(best_cpos(*cpos_, *c)));
         cpos_ = best_cpos(*cpos_, *c);  // the machine's C now reads best_cpos

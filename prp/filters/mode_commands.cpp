@@ -43,6 +43,7 @@ bool ModeCommands::next(toolpath::Command& out) {
   out.clear();
   out.name = mode_;
   out.index = held_.index;
+  out.line = held_.line;
   return true;
 }
 

@@ -9,6 +9,7 @@ namespace prp {
 StreamError::StreamError(const toolpath::Command& command, const std::string& message)
     : std::runtime_error(fmt::format("command {} ({}): {}", command.index, command.name, message)),
       index_(command.index),
+      line_(command.line),
       name_(command.name),
       message_(message) {}
 
@@ -89,6 +90,7 @@ void make_motion(toolpath::Command& out, std::string_view name, const toolpath::
   out.name = std::string(name);
   out.index = from.index;
   out.depth = from.depth;
+  out.line = from.line;
   out.parameters.push_back({"xpos", toolpath::Value::make_numeric(p.x())});
   out.parameters.push_back({"ypos", toolpath::Value::make_numeric(p.y())});
   out.parameters.push_back({"zpos", toolpath::Value::make_numeric(p.z())});

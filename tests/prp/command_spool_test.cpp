@@ -25,6 +25,9 @@ std::vector<Command> samples() {
                                  {"off", Value::make_logical(false)}},
                         7);
   arc.depth = 2;
+  arc.line = 4000000000u;  // where it was read: errors found after the replay still point there
+  arc.parameters[0].line = 41;
+  arc.parameters[0].column = 4000000000u;
   arc.trace = {{toolpath::TraceLine::Kind::Output, "N10 G3 X1."}, {toolpath::TraceLine::Kind::Partial, ""}};
   Command bare;
   bare.name = "@end_of_file";
@@ -49,6 +52,10 @@ TEST(CommandSpool, ReadsBackWhatWasWritten) {
   for (const auto& expected : commands) {
     ASSERT_TRUE(spool.read(c));
     EXPECT_EQ(c, expected);
+    EXPECT_EQ(c.line, expected.line);  // not part of ==
+    for (std::size_t i = 0; i < c.parameters.size() && i < expected.parameters.size(); ++i)
+      EXPECT_EQ(std::pair(c.parameters[i].line, c.parameters[i].column),
+                std::pair(expected.parameters[i].line, expected.parameters[i].column));
   }
   EXPECT_FALSE(spool.read(c));
   for (std::size_t i = commands.size(); i-- > 0;) {  // from any offset, in any order

@@ -35,7 +35,7 @@ protected:
 
 const std::string kJob =
     "@start_of_file\ng_file_name : 'JOB'\n"
-    "@line\nxpos : 1\nuser_clamp : 3\n"
+    "@line\nxpos : 1\nypos : 0\nzpos : 0\nfeed : 100\nuser_clamp : 3\n"
     "@end_of_file\n";
 
 TEST_F(Names, UndefinedNameIsTheSameDiagnosticInCheckAndRun) {
@@ -121,7 +121,8 @@ TEST_F(Names, ToolTypeWordsAreConstants) {
   const std::string post = write("tools.gpp",
                                  "@change_tool\n  if tool_type eq face_mill\n    {nb, 'face'}\n  else\n    {nb, 'other'}\n"
                                  "  endif\nendp\n");
-  const std::string job = write("tools.trace", "@change_tool\ntool_type : face_mill\n@change_tool\ntool_type : END_MILL\n");
+  const std::string job = write("tools.trace", "@change_tool\ntool_number : 1\ntool_type : face_mill\n"
+                                                "@change_tool\ntool_number : 2\ntool_type : END_MILL\n");
   EXPECT_EQ(run_cli({"check", "-q", post}).code, 0);
   auto ran = run_cli({"run", "-q", "--post", post, job});
   EXPECT_EQ(ran.code, 0) << ran.err;

@@ -42,11 +42,13 @@ protected:
     postproc::OutputFiles files(dir, postproc::OutputFiles::LineEnd::LF, true);
     postproc::RunOptions options;
     options.input_name = "job.trace";
+    options.warnings = &warnings;
     engine.run(reader, files, options);
     std::ostringstream out;
     files.commit_to(out);
     return out.str();
   }
+  std::ostringstream warnings;  // the stream warnings of post()
 
   fs::path dir;
 };
@@ -57,7 +59,7 @@ TEST_F(EngineTest, ParametersChangeFlagsAndCommandNames) {
       "@line\n  {nl, prev_command, ' ', current_command, ' ', next_command, [' X'xpos], [' Y'ypos]}\nendp\n";
   const std::string trace =
       "@start_of_file\n"
-      "@line\nxpos : 1\nypos : 2\n"
+      "@line\nxpos : 1\nypos : 2\nzpos : 0\nfeed : 100\n"
       "@line\nxpos : 1\nypos : 3\n"
       "@line\nxpos : 1T\nypos : 4F\n"
       "@tmatrix\n"
@@ -78,7 +80,7 @@ TEST_F(EngineTest, ParametersBindByNameWhateverTheirSpellingAndOrder) {
       "@line\n  {nl, xpos, ' ', ypos, ' ', extra_a, ' ', extra_b}\n"
       "  if side eq COMP_LEFT\n    {' L'}\n  else\n    {' R'}\n  endif\nendp\n";
   const std::string trace =
-      "@line\nxpos : 1\nypos : 2\nextra_a : 7\nextra_b : 8\nside : COMP_LEFT\n"
+      "@line\nxpos : 1\nypos : 2\nzpos : 0\nfeed : 100\nextra_a : 7\nextra_b : 8\nside : COMP_LEFT\n"
       "@line\nYPOS : 3\nXpos : 4\nextra_b : 9\nextra_a : 10\nside : comp_right\n"
       "@line\nextra_a : 11\nside : comp_left\nxpos : 5\nextra_b : 12\nypos : 6\n"
       "@line\nxpos : 5\nypos : 6\nEXTRA_A : 13\nextra_b : 14\nside : COMP_RIGHT\n";
@@ -151,13 +153,30 @@ TEST_F(EngineTest, DirectivesSplitTheOutput) {
             "==> O2.SPF <==\nO2\nM99\n");
 }
 
+// What the PRP's filters find wrong with a command points at its header in the trace: an error
+// stops the run, a warning goes to the run's warnings.
+TEST_F(EngineTest, FilterErrorsAndWarningsNameTheTraceLine) {
+  const std::string rapid = "(1)@rapid_move      ==> xpos:0 ypos:0 zpos:5\n";
+  try {
+    post("@arc\n  {nl, 'arc'}\nendp\n",
+         rapid + "(1)@arc             ==> xpos:1 ypos:1 zpos:0 feed:100 arc_direction:cw arc_plane:qq xcenter:0 ycenter:1\n",
+         "@pre_processor\n  arc_quadrants = Y\nendp\n");
+    ADD_FAILURE() << "no error";
+  } catch (const toolpath::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "job.trace:2:1: command #1 @arc: arc_plane `qq` is none of XY, YZ, ZX");
+  }
+  EXPECT_EQ(post("@loop\nendp\n", rapid + "(1)@loop            ==> label:1 loop_count:2\n(1)@end_loop\n", "@pre_processor\n  loop_exist = N\nendp\n"), "");
+  EXPECT_EQ(warnings.str(), "job.trace:2:1: warning: command #1 @loop: @loop although the PRP says loop_exist = N\n");
+}
+
 TEST_F(EngineTest, ErrorsNameTheCommandAndLeaveOldFilesAlone) {
   std::ofstream(dir / "OUT.NC") << "old\n";
   std::ofstream(dir / "p.gpp") << "@line\n  {nl, 'x'}\n  gcode = 1 / 0\nendp\n";
   postproc::EngineOptions engine_options;
   engine_options.post = (dir / "p.gpp").string();
   postproc::Engine engine(engine_options);
-  std::istringstream in("@start_of_file\ng_file_name : 'OUT.NC'\n@rapid_move\n@line\n");
+  std::istringstream in("@start_of_file\ng_file_name : 'OUT.NC'\n@rapid_move\nxpos : 0\nypos : 0\nzpos : 5\n"
+                         "@line\nxpos : 0\nypos : 0\nzpos : 0\nfeed : 100\n");
   toolpath::TraceReader reader(in, "job.trace");
   postproc::OutputFiles files(dir);
   postproc::RunOptions options;
@@ -167,7 +186,7 @@ TEST_F(EngineTest, ErrorsNameTheCommandAndLeaveOldFilesAlone) {
     engine.run(reader, files, options);
     ADD_FAILURE() << "no error";
   } catch (const postproc::RunError& e) {
-    EXPECT_EQ(std::string(e.what()), "job.trace: command #2 @line: " + (dir / "p.gpp").string() +
+    EXPECT_EQ(std::string(e.what()), "job.trace:7:1: command #2 @line: " + (dir / "p.gpp").string() +
                                          ":3:13: error 407: Zero divide");
   }
   std::ifstream old(dir / "OUT.NC");

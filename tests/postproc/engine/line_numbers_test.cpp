@@ -91,6 +91,8 @@ TEST_F(LineNumbersTest, CrLfFilesKeepTheirPlaceholdersInPlace) {
 }
 
 const std::string kNumbered = "@init_post\n  blknum_gen = TRUE\nendp\n@line\n  {nb, 'X'}\nendp\n";
+// A @line as a trace gives it (five lines).
+const std::string kLine = "@line\nxpos : 1\nypos : 0\nzpos : 0\nfeed : 90\n";
 
 TEST_F(LineNumbersTest, ErrorsNameTheItemTheCommandAndTheBody) {
   struct Case {
@@ -100,33 +102,33 @@ TEST_F(LineNumbersTest, ErrorsNameTheItemTheCommandAndTheBody) {
   for (const Case& c : {
            Case{"a body without numbered blocks",
                 "@call_proc\n  {nb, 'CALL ' start_line}\nendp\n@line\n  {nl, 'X'}\nendp\n",
-                "@call_proc\nlabel : 4\n@proc\nlabel : 4\n@line\n@end_proc\n",
-                "job.trace: command #3 @end_proc: start_line at " + (dir / "p.gpp").string() +
+                "@call_proc\nlabel : 4\n@proc\nlabel : 4\n" + kLine + "@end_proc\n",
+                "job.trace:10:1: command #3 @end_proc: start_line at " + (dir / "p.gpp").string() +
                     ":2:16 (command #0 @call_proc): the body of subroutine 4 has no numbered blocks (is block "
                     "numbering on there?)"},
            Case{"a closed body without numbered blocks, asked for later",
                 "@call_proc\n  {nb, 'CALL ' end_line}\nendp\n@line\n  {nl, 'X'}\nendp\n",
-                "@proc\nlabel : 4\n@line\n@end_proc\n@call_proc\nlabel : 4\n",
-                "job.trace: command #3 @call_proc: " + (dir / "p.gpp").string() +
+                "@proc\nlabel : 4\n" + kLine + "@end_proc\n@call_proc\nlabel : 4\n",
+                "job.trace:9:1: command #3 @call_proc: " + (dir / "p.gpp").string() +
                     ":2:16: error 404: Symbol 'end_line' does not exist: the body of subroutine 4 has no numbered "
                     "blocks (is block numbering on there?)"},
            Case{"a call whose body never comes", kNumbered + "@call_proc\n  {nb, 'CALL ' end_line}\nendp\n",
-                "@call_proc\nlabel : 9\n@line\n",
+                "@call_proc\nlabel : 9\n" + kLine,
                 "job.trace: at the end of the run: end_line at " + (dir / "p.gpp").string() +
                     ":8:16 (command #0 @call_proc): no body of subroutine 9 followed (no @proc with label 9)"},
            Case{"a loop that never ends", kNumbered + "@loop\n  {nl, '(' start_line ')'}\nendp\n",
-                "@loop\nlabel : 2\n@line\n",
+                "@loop\nlabel : 2\n" + kLine,
                 "job.trace: at the end of the run: start_line at " + (dir / "p.gpp").string() +
                     ":8:12 (command #0 @loop): the body of loop 2 never ended (no @end_loop)"},
            Case{"a command without a body", kNumbered + "@rapid_move\n  {nb, 'N' start_line}\nendp\n",
-                "@rapid_move\n",
-                "job.trace: command #0 @rapid_move: " + (dir / "p.gpp").string() +
+                "@rapid_move\nxpos : 0\nypos : 0\nzpos : 5\n",
+                "job.trace:1:1: command #0 @rapid_move: " + (dir / "p.gpp").string() +
                     ":8:12: error 404: Symbol 'start_line' does not exist: start_line and end_line belong to "
                     "@call_proc, @call_prms, @start_of_job, @turning, @thread, @proc, @end_proc, @turn_proc, "
                     "@turn_endproc, @loop and @end_loop (and the procedures they call)"},
            Case{"an end without a beginning", kNumbered + "@end_loop\n  {nb, 'G14 N1=' start_line}\nendp\n",
                 "@end_loop\n",
-                "job.trace: command #0 @end_loop: " + (dir / "p.gpp").string() +
+                "job.trace:1:1: command #0 @end_loop: " + (dir / "p.gpp").string() +
                     ":8:18: error 404: Symbol 'start_line' does not exist: no loop is open here to end"},
        })
     EXPECT_EQ(error(c.gpp, c.trace), c.expected) << c.what;

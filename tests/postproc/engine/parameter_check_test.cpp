@@ -49,11 +49,14 @@ TEST(ParameterCheck, KindMismatchTable) {
     EXPECT_EQ(postproc::kind_mismatch(c.kind, c.value), c.problem) << int(c.kind) << " " << c.value.text;
 }
 
-// The message `read` and `run` give for a job, or "" when it reads through.
-std::string read_error(const std::string& trace) {
+// The message `read` and `run` give for a job, or "" when it reads through; the warnings, one per
+// line, go to `warnings` when given.
+std::string read_error(const std::string& trace, std::string* warnings = nullptr) {
   std::istringstream in(trace);
   toolpath::TraceReader reader(in, "job.trace");
-  postproc::ParameterCheck check(reader, "job.trace");
+  postproc::ParameterCheck check(reader, "job.trace", [&](const toolpath::SourcePosition& at, const std::string& m) {
+    if (warnings) *warnings += at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " + m + "\n";
+  });
   toolpath::Command c;
   try {
     while (check.next(c)) {
@@ -78,13 +81,62 @@ TEST(ParameterCheck, ReadErrorsNameTheValue) {
       {"@start_of_file\nrotate_used : 7\n", "job.trace:2:15: parameter `rotate_used` of @start_of_file: expected TRUE, FALSE, 0 or 1, not 7"},
       {"@line\nxpos : 1\nfeed : -5\n", "job.trace:3:8: parameter `feed` of @line: expected a feed of 0 or more, not -5"},
       {"@arc\nradius : 0.0\n", "job.trace:2:10: parameter `radius` of @arc: expected an arc radius above 0, not 0"},
-      {"@line\nfeed : 0\n", ""},
+      {"@line\nxpos : 1\nypos : 2\nzpos : 0\nfeed : 0\n", ""},
       // Deeper commands record what the original post did: kept as written.
       {"(2)@rapid_move      ==> xpos:abc\n", ""},
       // Names outside the catalogue hold anything.
-      {"@line\nmy_note : 12..5\n", ""},
+      {"@line\nmy_note : 12..5\nxpos : 1\nypos : 2\nzpos : 0\nfeed : 10\n", ""},
   };
   for (const auto& c : cases) EXPECT_EQ(read_error(c.trace), c.error) << c.trace;
+}
+
+// A motion command read from a trace carries what it cannot do without. One that no command
+// before it gave is an error at the command's header; one given before is taken over, with one
+// warning per command and parameter.
+TEST(ParameterCheck, MotionsCarryWhatTheyNeed) {
+  const std::string rapid = "(1)@rapid_move      ==> xpos:0 ypos:0 zpos:5\n";
+  const std::string line_expects = "expected `xpos`, `ypos`, `zpos` and `feed`, which a trace gives with every @line";
+  const std::string arc_expects =
+      "expected `xpos`, `ypos`, `zpos`, `feed`, `arc_direction` and a centre, which a trace gives with every @arc";
+  struct Case {
+    std::string trace;
+    std::string error;
+    std::string warnings;
+  } cases[] = {
+      {rapid + "(1)@line            ==> xpos:1 ypos:0 zpos:0 feed:100\n", "", ""},
+      {"@rapid_move\nxpos : 1\nypos : 2\n", "job.trace:1:1: @rapid_move has no `zpos`, and no command before it gave one: "
+                                             "expected `xpos`, `ypos` and `zpos`, which a trace gives with every @rapid_move", ""},
+      {rapid + "(1)@line            ==> xpos:1 ypos:0 zpos:0\n",
+       "job.trace:2:1: @line has no `feed`, and no command before it gave one: " + line_expects, ""},
+      {rapid + "(1)@line            ==> xpos:1 feed:100\n(1)@line            ==> xpos:2 feed:100\n", "",
+       "job.trace:2:1: @line has no `ypos`: the last one given stays (a trace gives `xpos`, `ypos`, `zpos` and `feed` with "
+       "every @line; further @line commands without it are not reported)\n"
+       "job.trace:2:1: @line has no `zpos`: the last one given stays (a trace gives `xpos`, `ypos`, `zpos` and `feed` with "
+       "every @line; further @line commands without it are not reported)\n"},
+      {rapid + "(1)@arc             ==> xpos:1 ypos:0 zpos:0 feed:100 arc_direction:cw\n",
+       "job.trace:2:1: @arc has no centre (`xcenter` and `ycenter`, or `xcenter_rel` and `ycenter_rel`), and no command "
+       "before it gave one: " + arc_expects, ""},
+      {rapid + "(1)@arc             ==> xpos:1 ypos:0 zpos:0 feed:100 arc_direction:cw xcenter:0.5\n",
+       "job.trace:2:1: @arc has no centre (`xcenter` and `ycenter`, or `xcenter_rel` and `ycenter_rel`), and no command "
+       "before it gave one: " + arc_expects, ""},
+      {rapid + "(1)@arc             ==> xpos:1 ypos:0 zpos:0 feed:100 arc_direction:cw xcenter_rel:0.5 ycenter_rel:0\n", "", ""},
+      {rapid + "(1)@arc             ==> xpos:1 ypos:0 zpos:0 feed:100 xcenter:0.5 ycenter:0\n",
+       "job.trace:2:1: @arc has no `arc_direction`, and no command before it gave one: " + arc_expects, ""},
+      {"@change_tool\ntool_offset : 3\n", "job.trace:1:1: @change_tool has no `tool_number`, and no command before it gave one: "
+                                          "expected `tool_number`, which a trace gives with every @change_tool", ""},
+      {"@drill_point\nxpos : 1\n", "job.trace:1:1: @drill_point has no `ypos`, and no command before it gave one: "
+                                   "expected `xpos`, `ypos` and `zpos`, which a trace gives with every @drill_point", ""},
+      // What the original post called itself (depth 2) is not a command of the stream.
+      {"(2)@line            ==> xpos:1\n", "", ""},
+      // Other commands need nothing; a value of the wrong type is reported first.
+      {"@start_of_job\n@end_of_file\n", "", ""},
+      {"@line\nfeed : fast\n", "job.trace:2:8: parameter `feed` of @line: expected a number, not fast", ""},
+  };
+  for (const auto& c : cases) {
+    std::string warnings;
+    EXPECT_EQ(read_error(c.trace, &warnings), c.error) << c.trace;
+    EXPECT_EQ(warnings, c.warnings) << c.trace;
+  }
 }
 
 // A parameter outside the catalogue that the post declares itself (`global numeric`): a value of
@@ -96,7 +148,7 @@ TEST(ParameterCheck, RunErrorsNameTheValue) {
   postproc::EngineOptions engine_options;
   engine_options.post = (dir / "p.gpp").string();
   postproc::Engine engine(engine_options);
-  std::istringstream in("@start_of_file\n@line\nmy_depth : 5\n@line\nmy_depth : deep down\n");
+  std::istringstream in("@start_of_file\n@line\nmy_depth : 5\nxpos : 0\nypos : 0\nzpos : 0\nfeed : 1\n@line\nmy_depth : deep down\n");
   toolpath::TraceReader reader(in, "job.trace");
   postproc::OutputFiles files(dir, postproc::OutputFiles::LineEnd::LF, true);
   postproc::RunOptions options;
@@ -108,7 +160,7 @@ TEST(ParameterCheck, RunErrorsNameTheValue) {
     error = e.what();
   }
   fs::remove_all(dir);
-  EXPECT_EQ(error.rfind("job.trace:5:12: parameter `my_depth` of @line: error 386: ", 0), 0u) << "[" << error << "]";
+  EXPECT_EQ(error.rfind("job.trace:9:12: parameter `my_depth` of @line: error 386: ", 0), 0u) << "[" << error << "]";
 }
 
 }  // namespace
