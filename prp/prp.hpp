@@ -99,8 +99,8 @@ struct Record {
   std::vector<std::string> params;  // user parameter names, as written
   VarType type = VarType::Numeric;  // Declaration only
   std::string raw;
-  toolpath::SourcePosition where;       // of the value (a VMID: of the element's first attribute)
-  toolpath::SourcePosition name_where;  // of the name
+  toolpath::SourcePosition where;       // of the value (a VMID: of the GppName attribute's value)
+  toolpath::SourcePosition name_where;  // of the name (a VMID: the same)
 };
 
 // A key the spec does not document: kept verbatim, so the post can still read it.

@@ -129,10 +129,11 @@ struct JobReport {
   std::string nc_line;             // "NAME.NC:42: G2 X40. Y5. I0. J5." of the actual side
 };
 
-// Posts `job` with the engine (post and PRP of `engine_options`), reads the main NC program back
-// and compares. The program is written to `keep_program` when given, else to a temporary folder
-// that is removed. Throws what Engine and the readers throw (errors in the inputs).
-JobReport verify_job(const EngineOptions& engine_options, const std::string& job, const Tolerances& tolerances,
+// Posts `job` with `engine` (the caller builds it, so that it can report the machine file's
+// warnings first), reads the main NC program back and compares. The program is written to
+// `keep_program` when given, else to a temporary folder that is removed. Throws what the engine and
+// the readers throw (errors in the inputs).
+JobReport verify_job(const Engine& engine, const std::string& job, const Tolerances& tolerances,
                      const std::optional<std::filesystem::path>& keep_program = std::nullopt,
                      const Target& target = {});
 

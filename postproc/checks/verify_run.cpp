@@ -46,9 +46,8 @@ std::string line_of(const std::filesystem::path& file, std::size_t number) {
 
 }  // namespace
 
-JobReport verify_job(const EngineOptions& engine_options, const std::string& job, const Tolerances& tolerances,
+JobReport verify_job(const Engine& engine, const std::string& job, const Tolerances& tolerances,
                      const std::optional<std::filesystem::path>& keep_program, const Target& target) {
-  Engine engine(engine_options);
   TemporaryFolder folder;
   std::filesystem::path main_file;
   ExpectedMotion expected(engine.machine());

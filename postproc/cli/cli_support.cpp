@@ -78,8 +78,12 @@ EngineOptions engine_options(const Arguments& args, std::ostream* log) {
   return o;
 }
 
+void print_machine_warnings(const prp::MachineParameters& machine, std::ostream& err) {
+  for (const auto& w : machine.warnings()) err << w.text(true) << '\n';
+}
+
 void print_machine_warnings(const Engine& engine, std::ostream& err) {
-  for (const auto& w : engine.machine(prp::Units::Metric).warnings()) err << w.text(true) << '\n';
+  print_machine_warnings(engine.machine(prp::Units::Metric), err);
 }
 
 Input Input::open(const std::string& path) {

@@ -24,8 +24,11 @@ EngineOptions engine_options(const Arguments& args, std::ostream* log);
 // std::runtime_error "FILE:LINE:COLUMN: ..." on a line without a name and `=`.
 std::vector<gppl::Answer> read_answers_file(const std::string& path);
 
-// The machine file's warnings (unknown keys, ...), each once, as `file:line:col: warning: ...`. The
-// engine loads the file once per unit half; both give the same warnings, so one half is printed.
+// The machine file's warnings (unknown keys, unknown VMID codes, ...), one a line, as
+// `file:line:col: warning: ...`. Every subcommand that loads a PRP or VMID prints them through
+// these, so none hides what another shows.
+void print_machine_warnings(const prp::MachineParameters& machine, std::ostream& err);
+// The engine loads the file once per unit half; both give the same warnings, so one half is printed.
 void print_machine_warnings(const Engine& engine, std::ostream& err);
 
 // The job file, opened so that the progress bar can tell how far the reader is.

@@ -27,7 +27,7 @@ bool is_prp(const std::string& path) {
 std::size_t check_prp(const std::string& path, prp::Units units, std::ostream& out) {
   try {
     auto params = prp::load_file(path, units);
-    for (const auto& w : params.warnings()) out << w.text(true) << '\n';
+    print_machine_warnings(params, out);
     return 0;
   } catch (const prp::LoadError& e) {
     for (const auto& d : e.errors()) out << d.text() << '\n';

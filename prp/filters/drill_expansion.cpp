@@ -15,6 +15,13 @@ bool contains_ci(std::string_view text, std::string_view part) {
   return it != text.end();
 }
 
+// `file:line:column` of the cycle's name: a PRP line or a VMID <DrillCycle>'s GppName alike (a line
+// number alone means nothing in an XML file that may be one long line).
+std::string position(const toolpath::SourcePosition& where) {
+  if (where.line == 0) return where.file;  // not from a file's text
+  return fmt::format("{}:{}:{}", where.file, where.line, where.column);
+}
+
 }  // namespace
 
 bool DrillExpansion::needed(const MachineParameters& params) {
@@ -61,8 +68,8 @@ void DrillExpansion::start_cycle(const toolpath::Command& drill) {
   }
   if (!record->flag || *record->flag) return;  // the machine (or the post) has the cycle
 
-  const std::string where = fmt::format("drill cycle `{}` (base {}, PRP line {}) of job `{}`", record->name,
-                                        record->base, record->where.line, job_);
+  const std::string where = fmt::format("drill cycle `{}` (base {}, declared at {}) of job `{}`", record->name,
+                                        record->base, position(record->name_where), job_);
   if (record->base == "TAPPING" || record->base == "R_BORING")
     throw StreamError(drill, where + " is marked N, but it needs spindle reversal or a spindle stop, which "
                                      "cannot be written as plain moves");

@@ -84,8 +84,8 @@ TEST(DrillExpansion, SecondHoleAndTheCycleCommandsAreReplaced) {
   EXPECT_EQ(out[11].name, "@rapid_move");
 }
 
-std::string expansion_error(const char* type) {
-  auto params = prp::load_source(kPrp, "d.prp", prp::Units::Metric);
+std::string expansion_error(const char* type, const char* machine = kPrp, const char* file = "d.prp") {
+  auto params = prp::load_source(machine, file, prp::Units::Metric);
   ListSource source(job(type));
   prp::DrillExpansion filter(source, params, {});
   try {
@@ -98,14 +98,51 @@ std::string expansion_error(const char* type) {
 
 TEST(DrillExpansion, CyclesThatCannotBeExpandedAreErrors) {
   EXPECT_EQ(expansion_error("Tapping"),
-            "command 1 (@drill): drill cycle `Tapping` (base TAPPING, PRP line 7) of job `DR1` is marked N, but it "
-            "needs spindle reversal or a spindle stop, which cannot be written as plain moves");
+            "command 1 (@drill): drill cycle `Tapping` (base TAPPING, declared at d.prp:7:14) of job `DR1` is marked "
+            "N, but it needs spindle reversal or a spindle stop, which cannot be written as plain moves");
   EXPECT_EQ(expansion_error("BadDwell"),
-            "command 1 (@drill): drill cycle `BadDwell` (base F_BORING, PRP line 9) of job `DR1` needs a dwell: its "
-            "record must declare exactly one parameter whose name contains `delay` or `dwell`");
+            "command 1 (@drill): drill cycle `BadDwell` (base F_BORING, declared at d.prp:9:14) of job `DR1` needs a "
+            "dwell: its record must declare exactly one parameter whose name contains `delay` or `dwell`");
   EXPECT_EQ(expansion_error("Macro"),
-            "command 1 (@drill): drill cycle `Macro` (base NONE, PRP line 10) of job `DR1` is marked N, but it has "
-            "no base type (None): nothing says which moves it stands for");
+            "command 1 (@drill): drill cycle `Macro` (base NONE, declared at d.prp:10:14) of job `DR1` is marked N, "
+            "but it has no base type (None): nothing says which moves it stands for");
+}
+
+// The error points at the cycle's definition in whichever machine file declared it: a VMID's
+// <DrillCycle> is named by the line and column of its GppName, not by a PRP line it does not have.
+TEST(DrillExpansion, ErrorsNameTheFileAndPositionOfTheCycle) {
+  const char* vmid =
+      "<Machine><MillDrilCycles>\n"
+      "  <DrillCycle GppName=\"G84\" DrillType=\"3\" UseCycle=\"0\"/>\n"
+      "  <DrillCycle GppName=\"G82\" DrillType=\"1\" UseCycle=\"0\"><CycleParams>\n"
+      "    <Param GppName=\"dwell\" ValueType=\"3\"/><Param GppName=\"delay\" ValueType=\"3\"/>\n"
+      "  </CycleParams></DrillCycle>\n"
+      "  <DrillCycle GppName=\"CYCLE85\" DrillType=\"8\" UseCycle=\"0\"/>\n"
+      "</MillDrilCycles></Machine>\n";
+  const char* one_line = "<Machine><DrillCycle DrillType=\"5\" UseCycle=\"0\" GppName=\"G86\"/></Machine>";
+  const char* spaced = "@pre_processor\n; taps\n\n  drill_type   =  Tap Tapping N\nendp\n";
+  struct Case {
+    const char* machine;
+    const char* file;
+    const char* type;
+    const char* where;  // what the message says in place of the position
+  } cases[] = {
+      {vmid, "m.vmid", "G84", "(base TAPPING, declared at m.vmid:2:24)"},
+      {vmid, "m.vmid", "G82", "(base F_DRILL, declared at m.vmid:3:24)"},
+      {vmid, "m.vmid", "CYCLE85", "(base NONE, declared at m.vmid:6:24)"},
+      {one_line, "machine.vmid", "G86", "(base R_BORING, declared at machine.vmid:1:58)"},
+      // a VMID is recognised by content whatever its name; the position is the file's own
+      {vmid, "shop.prp", "G84", "(base TAPPING, declared at shop.prp:2:24)"},
+      {kPrp, "d.prp", "Tapping", "(base TAPPING, declared at d.prp:7:14)"},
+      {spaced, "dir/p.prp", "Tap", "(base TAPPING, declared at dir/p.prp:4:19)"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(std::string(c.file) + " " + c.type);
+    const std::string error = expansion_error(c.type, c.machine, c.file);
+    EXPECT_NE(error.find(fmt::format("drill cycle `{}` {} of job `DR1`", c.type, c.where)), std::string::npos)
+        << error;
+    EXPECT_EQ(error.find("PRP line"), std::string::npos) << error;
+  }
 }
 
 TEST(DrillExpansion, UndeclaredCycleIsAWarning) {

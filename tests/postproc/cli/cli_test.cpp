@@ -101,24 +101,72 @@ TEST(Cli, CheckOfMissingFiles) {
   EXPECT_EQ(r.out, "no.gpp:1:1: error 399: Can't open file 'no.gpp'\nno.gpp: 1 error(s)\n");
 }
 
-// A machine file's warnings reach stderr once per run, although the engine loads the file for both
-// unit systems and the filters run many times.
-TEST(Cli, MachineFileWarningsArePrintedOnce) {
+// A copy of `from`, each edit's text inserted before the last occurrence of its mark, written into
+// `dir` as `name`.
+struct Edit {
+  std::string mark, text;
+};
+std::string edited_copy(const std::filesystem::path& dir, const std::string& from, const std::vector<Edit>& edits,
+                        const std::string& name) {
+  std::string content = test_support::slurp(from);
+  for (const auto& e : edits) {
+    const auto at = content.rfind(e.mark);
+    EXPECT_NE(at, std::string::npos) << from << ": " << e.mark;
+    if (at != std::string::npos) content.insert(at, e.text);
+  }
+  const auto path = (dir / name).string();
+  std::ofstream(path, std::ios::binary) << content;
+  return path;
+}
+
+// Every subcommand that loads a machine file prints its warnings, PRP and VMID alike, once, although
+// the engine loads the file for both unit systems and the filters run many times: the posting ones
+// on stderr before they post, `check` on stdout among its findings.
+TEST(Cli, MachineFileWarningsArePrintedOnceByEverySubcommand) {
   const auto dir = std::filesystem::temp_directory_path() / "postproc-cli-machine-warnings";
   std::filesystem::create_directories(dir);
-  std::string prp = test_support::slurp("../machines/fanuc/fanuc.prp");
-  const auto endp = prp.rfind("endp");
-  ASSERT_NE(endp, std::string::npos);
-  prp.insert(endp, "spare_key = 1\n");
-  const auto path = (dir / "extra.prp").string();
-  std::ofstream(path, std::ios::binary) << prp;
-  auto r = run({"run", "--post", "../machines/fanuc/fanuc.gpp", "--prp", path, "golden/fanuc-sample/job.trace"});
-  EXPECT_EQ(r.code, 0) << r.err;
-  const std::string warning = "warning: unknown key `spare_key`: kept as text for the post";
-  const auto first = r.err.find(warning);
-  ASSERT_NE(first, std::string::npos) << r.err;
-  EXPECT_EQ(r.err.find(warning, first + 1), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(path + ":"), std::string::npos) << r.err;
+  const std::string fanuc = "../machines/fanuc/fanuc.gpp", piko = "../machines/pikocnc/pikocnc.gpp";
+  const std::string job = "golden/fanuc-sample/job.trace", helix = "../docs/examples/planes-helix.trace";
+  const Edit spare_key{"endp", "spare_key = 1\n"};
+  const Edit cycle85{"</MillDrilCycles>", "<DrillCycle GppName=\"CYCLE85\" UseCycle=\"1\" DrillType=\"8\"/>\n"};
+  const Edit coolant{"</UserDefParams>",  // the job option the PikoCNC post reads
+                     "<MillParamsJobs><ParamJobs GppName=\"coolant\" ValueType=\"5\" Value=\"0\"/></MillParamsJobs>"};
+  const std::string prp = edited_copy(dir, "../machines/fanuc/fanuc.prp", {spare_key}, "extra.prp");
+  const std::string piko_prp = edited_copy(dir, "../machines/pikocnc/pikocnc.prp", {spare_key}, "piko-extra.prp");
+  const std::string vmid = edited_copy(dir, "golden/vmid-fanuc/fanuc.vmid", {cycle85}, "extra.vmid");
+  const std::string piko_vmid = edited_copy(dir, "golden/vmid-fanuc/fanuc.vmid", {cycle85, coolant}, "piko.vmid");
+  const std::string unknown_key = "warning: unknown key `spare_key`: kept as text for the post";
+  const std::string drill_type =
+      ":40:55: warning: DrillType=\"8\" of `CYCLE85`: expected 0 to 6; the cycle has no base type (None)";
+  struct Case {
+    std::vector<std::string> args;
+    std::string file;     // the machine file the warning names
+    std::string warning;  // on a line that starts with `file:`
+    bool on_stdout;
+  } cases[] = {
+      {{"run", "--post", fanuc, "--prp", prp, job}, prp, unknown_key, false},
+      {{"test", "--post", fanuc, "--prp", prp, "--expect", "golden/fanuc-sample/", job}, prp, unknown_key, false},
+      {{"explain", "--post", fanuc, "--prp", prp, job}, prp, unknown_key, false},
+      {{"verify", "--post", piko, "--prp", piko_prp, helix}, piko_prp, unknown_key, false},
+      {{"check", piko, piko_prp}, piko_prp, unknown_key, true},
+      {{"run", "--post", fanuc, "--prp", vmid, job}, vmid, drill_type, false},
+      {{"test", "--post", fanuc, "--prp", vmid, "--expect", "golden/fanuc-sample/", job}, vmid, drill_type, false},
+      {{"explain", "--post", fanuc, "--prp", vmid, job}, vmid, drill_type, false},
+      {{"verify", "--post", piko, "--prp", piko_vmid, helix}, piko_vmid, drill_type, false},
+      {{"check", "--prp", vmid, fanuc}, vmid, drill_type, true},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.args[0] + " " + c.file);
+    auto r = run(c.args);
+    EXPECT_EQ(r.code, 0) << r.err << r.out;
+    const std::string& printed = c.on_stdout ? r.out : r.err;
+    const auto first = printed.find(c.warning);
+    ASSERT_NE(first, std::string::npos) << printed;
+    EXPECT_EQ(printed.find(c.warning, first + 1), std::string::npos) << printed;
+    const auto line = printed.rfind('\n', first) + 1;  // npos + 1: the first line
+    EXPECT_EQ(printed.compare(line, c.file.size() + 1, c.file + ":"), 0) << printed;
+    EXPECT_EQ((c.on_stdout ? r.err : r.out).find("warning:"), std::string::npos);
+  }
   std::filesystem::remove_all(dir);
 }
 
