@@ -132,9 +132,10 @@ struct JobReport {
 // Posts `job` with `engine` (the caller builds it, so that it can report the machine file's
 // warnings first), reads the main NC program back and compares. The program is written to
 // `keep_program` when given, else to a temporary folder that is removed. Throws what the engine and
-// the readers throw (errors in the inputs).
+// the readers throw (errors in the inputs). The stream's warnings (RunOptions::warnings) go to
+// `warnings` when given.
 JobReport verify_job(const Engine& engine, const std::string& job, const Tolerances& tolerances,
                      const std::optional<std::filesystem::path>& keep_program = std::nullopt,
-                     const Target& target = {});
+                     const Target& target = {}, std::ostream* warnings = nullptr);
 
 }  // namespace postproc::verify

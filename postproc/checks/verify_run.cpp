@@ -47,7 +47,7 @@ std::string line_of(const std::filesystem::path& file, std::size_t number) {
 }  // namespace
 
 JobReport verify_job(const Engine& engine, const std::string& job, const Tolerances& tolerances,
-                     const std::optional<std::filesystem::path>& keep_program, const Target& target) {
+                     const std::optional<std::filesystem::path>& keep_program, const Target& target, std::ostream* warnings) {
   TemporaryFolder folder;
   std::filesystem::path main_file;
   ExpectedMotion expected(engine.machine());
@@ -56,6 +56,7 @@ JobReport verify_job(const Engine& engine, const std::string& job, const Toleran
     OutputFiles files(folder.path());
     RunOptions options;
     options.input_name = job;
+    options.warnings = warnings;
     options.main_path = [&](const std::string& default_name) {
       main_file = folder.path() / default_name;
       return main_file;

@@ -62,7 +62,7 @@ int run_verify(const Arguments& args, std::ostream& out, std::ostream& err) {
   const verify::Target target = verify_target(args.value("--dialect", "pikocnc"), engine_opts);
   Engine engine(engine_opts);
   print_machine_warnings(engine, err);  // before posting, as `run` does
-  verify::JobReport report = verify::verify_job(engine, job, tolerances, keep, target);
+  verify::JobReport report = verify::verify_job(engine, job, tolerances, keep, target, &err);
   const auto& r = report.result;
   if (!r.divergence) {
     if (!args.has("--quiet")) out << fmt::format("{}: ok, {} motion events match\n", job, r.compared);
