@@ -193,9 +193,13 @@ bool ParameterCheck::next(toolpath::Command& out) {
                                fmt::format("parameter `{}` of {}: {}", p.name, out.name, problem));
   }
   if (((present & kXcentre) && (present & kYcentre)) || ((present & kXrel) && (present & kYrel))) present |= kCentre;
-  // Only what was read from a trace: a controller model's stream (2XAxisCNC has no Z) or a
-  // generated one carries what its machine has.
-  if (out.line != 0) check_required(out, present);
+  // Only what was read from a trace: a controller model's stream (2XAxisCNC has no Z), read
+  // directly or from the trace `postproc read --dialect` wrote (its @start_of_file names the
+  // dialect), or a generated one carries what its machine has.
+  if (out.line != 0 && !read_back_) {
+    if (toolpath::iequals(out.name, "@start_of_file") && out.find("dialect")) read_back_ = true;
+    else check_required(out, present);
+  }
   given_ |= present;
   return true;
 }

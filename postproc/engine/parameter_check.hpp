@@ -24,6 +24,8 @@ std::string kind_mismatch(ParameterKind kind, const toolpath::Value& value);
 // parameters it cannot do without (`xpos ypos zpos` of `@rapid_move`, the centre of `@arc`, ...):
 // one that no command of the stream has given yet is an error, since the post would invent it;
 // one given before is taken over from there, with a warning (once per command and parameter).
+// A stream a controller model read back from G-code (@start_of_file names its `dialect`) has the
+// axes of its machine and is not held to this.
 class ParameterCheck final : public toolpath::CommandSource {
 public:
   using Warn = std::function<void(const toolpath::SourcePosition& where, const std::string& message)>;
@@ -44,6 +46,7 @@ private:
   Warn warn_;
   std::uint32_t given_ = 0;   // the required parameters some command has carried (bits of Need)
   std::uint64_t warned_ = 0;  // (command, parameter) pairs already warned about
+  bool read_back_ = false;    // the stream is G-code read back by a controller model
 };
 
 }  // namespace postproc

@@ -46,6 +46,15 @@ TEST(TwoAxisCli, RunPostsAProgramAgain) {
   EXPECT_NE(r.out.find("M03\nP2,5\n5,5 -3 1\n2 0 0,7\n-7,5 3\n"), std::string::npos) << r.out;
 }
 
+// The trace `read --dialect 2xaxiscnc` writes posts like the program it came from: it names its
+// dialect, so its motions are not asked for the Z and feed a 2-axis machine does not have.
+TEST(TwoAxisCli, ItsTracePostsAgain) {
+  const auto r = run({"run", "--post", kPost, "--prp", kPrp, "machines/2xaxiscnc/golden/tv1_reader_basics/expected.trace"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("M03\nP2,5\n5,5 -3 1\n2 0 0,7\n-7,5 3\n"), std::string::npos) << r.out;
+}
+
 TEST(TwoAxisCli, VerifyFindsAMirroredProgram) {
   const auto ok = run({"verify", "--dialect", "2xaxiscnc", "--post", kPost, "--prp", kPrp, "../docs/examples/planes-helix.trace"});
   EXPECT_EQ(ok.code, 0) << ok.out << ok.err;

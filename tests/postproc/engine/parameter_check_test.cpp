@@ -126,6 +126,8 @@ TEST(ParameterCheck, MotionsCarryWhatTheyNeed) {
                                           "expected `tool_number`, which a trace gives with every @change_tool", ""},
       {"@drill_point\nxpos : 1\n", "job.trace:1:1: @drill_point has no `ypos`, and no command before it gave one: "
                                    "expected `xpos`, `ypos` and `zpos`, which a trace gives with every @drill_point", ""},
+      // G-code read back by a controller model carries the axes of its machine (2XAxisCNC: no Z).
+      {"(1)@start_of_file   ==> dialect:'2xaxiscnc'\n(1)@line            ==> xpos:1 ypos:2\n", "", ""},
       // What the original post called itself (depth 2) is not a command of the stream.
       {"(2)@line            ==> xpos:1\n", "", ""},
       // Other commands need nothing; a value of the wrong type is reported first.
