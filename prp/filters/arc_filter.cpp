@@ -19,7 +19,7 @@ namespace {
 // each name, as with Command::find): what plan() needs of an arc, the tool position and apos/bpos
 // it follows on every command, and whether a move names a set end point (for SetHistory).
 enum ArcField { kX, kY, kZ, kApos, kBpos, kXcenter, kYcenter, kXrel, kYrel, kZstart, kSize, kPlane, kDirection,
-                kPlaneM, kFieldCount };
+                kPlaneM, kRadius, kFieldCount };
 
 using toolpath::ParamKey;
 
@@ -34,7 +34,8 @@ constexpr auto kCodes = [] {
       {ParamKey::ycenter, kYcenter}, {ParamKey::xcenter_rel, kXrel},
       {ParamKey::ycenter_rel, kYrel}, {ParamKey::zstart, kZstart},
       {ParamKey::arc_size, kSize},   {ParamKey::arc_plane, kPlane},
-      {ParamKey::arc_direction, kDirection}, {ParamKey::arc_plane_m, kPlaneM}};
+      {ParamKey::arc_direction, kDirection}, {ParamKey::arc_plane_m, kPlaneM},
+      {ParamKey::radius, kRadius}};
   for (auto [key, field] : fields) at(t, key) = static_cast<std::uint8_t>(1 + field);
   for (ParamKey key : kSetEndPoints) at(t, key) = kSetEndPoint;
   return t;
@@ -82,6 +83,7 @@ ArcSettings ArcSettings::from(const MachineParameters& p) {
   s.eps_angle = p.numeric("eps_angle");
   s.zero_value = p.numeric("zero_value");
   s.limits_defaulted = !p.has("arc_max_angle") && !p.has("arc_max_chord") && !p.has("arc_max_deviation");
+  s.circle_tolerance = p.units() == Units::Inch ? 0.0002 : 0.005;
   return s;
 }
 
@@ -125,6 +127,30 @@ void ArcFilter::follow(const toolpath::Command& out, CommandKind kind, const Fie
       if (const toolpath::Value* v = f.values[kX + i]; v && is_number(*v)) position_.set_axis(i, number_of(*v));
   if (const toolpath::Value* v = f.values[kApos]; v && is_number(*v)) apos_ = number_of(*v);
   if (const toolpath::Value* v = f.values[kBpos]; v && is_number(*v)) bpos_ = number_of(*v);
+}
+
+// An arc is one only when its start and end lie on one circle about its centre, and its `radius`
+// (when the stream gives it) is that circle's: otherwise the post writes an arc the machine
+// refuses or, with an R word, one through other points. Trace numbers carry 3 decimals or more,
+// so their rounding stays well inside the tolerance.
+void ArcFilter::check_circle(const toolpath::Command& c, const Eigen::Vector3d& start, const Eigen::Vector3d& end,
+                             const Eigen::Vector3d& centre, const toolpath::geometry::PlaneAxes& a,
+                             std::optional<double> radius) const {
+  const auto in_plane = [&](const Eigen::Vector3d& p) {
+    return std::hypot(p[a.first] - centre[a.first], p[a.second] - centre[a.second]);
+  };
+  const double r_start = in_plane(start), r_end = in_plane(end);
+  const double tolerance = settings_.circle_tolerance * (1 + 1e-4 * r_start);
+  if (r_start <= 1e-6)  // below any machine's resolution; smaller real arcs are still arcs
+    throw StreamError(c, "arc with zero radius: its centre is where it starts");
+  if (std::abs(r_end - r_start) > tolerance)
+    throw StreamError(c, fmt::format("the arc's end point is not on its circle: {:g} from the centre, its start {:g} "
+                                     "(more than {:g} apart)",
+                                     r_end, r_start, tolerance));
+  if (radius && std::abs(*radius - r_start) > tolerance)
+    throw StreamError(c, fmt::format("radius {:g} is not the arc's: its start is {:g} from its centre (more than {:g} "
+                                     "apart)",
+                                     *radius, r_start, tolerance));
 }
 
 // Decides what replaces the arc (spec 3.2 process_arc); pieces_ stays 0 when it passes unchanged.
@@ -177,6 +203,7 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Fields&
   auto zstart = plane == Plane::XY ? f.number(kZstart) : std::nullopt;
   start[a.normal] = zstart ? *zstart : position_.axis(a.normal).value_or(end[a.normal]);
   centre[a.normal] = start[a.normal];
+  if (settings_.check_circles) check_circle(c, start, end, centre, a, f.number(kRadius));
 
   bool tilted = false;  // in the machine's axes the arc lies in none of XY, YZ, ZX
   if (const toolpath::Value* m = f.find(kPlaneM)) tilted = !toolpath::geometry::parse_plane(m->text);

@@ -48,7 +48,8 @@ std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParamet
   if (params.has("dflt_start") || params.has("dflt_end")) chain->add<DefaultPositions>(params);
   if (CompensationCheck::needed(params)) chain->add<CompensationCheck>(params.numeric("min_delt_arc_rad"), warn);
   if (params.numeric("eps_line") > 0) chain->add<ShortLineFilter>(params.numeric("eps_line"));
-  if (auto arcs = ArcSettings::from(params); !arcs.passes_everything()) chain->add<ArcFilter>(arcs, warn);
+  // Always there: even a machine that takes every arc is not sent one that is no arc (check_circle).
+  chain->add<ArcFilter>(ArcSettings::from(params), warn);
   if (auto precision = PrecisionSettings::from(params); !precision.does_nothing()) chain->add<PrecisionFilter>(precision);
   if (params.logical("full_gcode")) chain->add<FullCoordinates>();
   return chain;

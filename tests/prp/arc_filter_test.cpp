@@ -178,6 +178,51 @@ TEST(ArcFilter, TinyArcsBecomeLinesAndBadArcsAreErrors) {
       prp::StreamError);
 }
 
+// An arc is one only when its end lies on the circle its start and centre make, and the radius the
+// stream gives is that circle's; within 0.005 mm (0.0002 inch), growing by 1e-4 of the radius.
+TEST(ArcFilter, ArcsThatAreNoArcsAreErrors) {
+  struct Case {
+    const char* what;
+    double end_x, end_y, centre_x, centre_y, radius;
+    prp::Units units;
+    const char* error;  // "" when it passes
+  } cases[] = {
+      {"a true quarter circle", 56, 26, 26, 26, 30, prp::Units::Metric, ""},
+      {"trace rounding (3 decimals)", 56.0004, 25.9996, 26, 26, 30.0004, prp::Units::Metric, ""},
+      {"end off the circle", 60, 26, 26, 26, 30, prp::Units::Metric,
+       "command 2 (@arc): the arc's end point is not on its circle: 34 from the centre, its start 30 (more than 0.005015 apart)"},
+      {"a radius that is not the arc's", 56, 26, 26, 26, 7, prp::Units::Metric,
+       "command 2 (@arc): radius 7 is not the arc's: its start is 30 from its centre (more than 0.005015 apart)"},
+      {"centre on the start", 26, -4, 26, -4, 0, prp::Units::Metric,
+       "command 2 (@arc): arc with zero radius: its centre is where it starts"},
+      {"inch: 0.001 off is too much", 56.001, 26, 26, 26, 30, prp::Units::Inch,
+       "command 2 (@arc): the arc's end point is not on its circle: 30.001 from the centre, its start 30 (more than "
+       "0.0002006 apart)"},
+  };
+  for (const Case& c : cases) {
+    auto job = circle_job();
+    job[1].set("xpos", num(c.end_x));
+    job[1].set("ypos", num(c.end_y));
+    job[1].set("xcenter", num(c.centre_x));
+    job[1].set("ycenter", num(c.centre_y));
+    job[1].set("xcenter_rel", num(c.centre_x - 26));
+    job[1].set("ycenter_rel", num(c.centre_y + 4));
+    job[1].set("radius", num(c.radius));
+    job[1].set("arc_size", num(90));
+    ArcSettings s;
+    s.circle_tolerance = c.units == prp::Units::Inch ? 0.0002 : 0.005;
+    std::string error;
+    try {
+      run(job, s);
+    } catch (const prp::StreamError& e) {
+      error = e.what();
+    }
+    EXPECT_EQ(error, c.error) << c.what;
+  }
+  EXPECT_EQ(ArcSettings::from(prp::defaults(prp::Units::Metric)).circle_tolerance, 0.005);
+  EXPECT_EQ(ArcSettings::from(prp::defaults(prp::Units::Inch)).circle_tolerance, 0.0002);
+}
+
 // --- properties over random arcs -------------------------------------------------------------
 
 struct RandomArc {

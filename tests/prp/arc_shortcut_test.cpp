@@ -63,6 +63,7 @@ std::vector<Command> commands(const TestArc& t) {
 std::vector<ArcSettings> settings_table() {
   std::vector<ArcSettings> table;
   ArcSettings fanuc;  // machines/fanuc/fanuc.prp
+  fanuc.check_circles = false;  // the table holds arcs of radius 1e-60: the rules, not the check
   fanuc.max_radius = 2000;
   fanuc.min_length = 0.001;
   fanuc.eps_angle = 0.002;
@@ -70,6 +71,7 @@ std::vector<ArcSettings> settings_table() {
   fanuc.max_chord = 0;  // chords by angle only: a linearised arc of radius 1e6 stays a few dozen lines
   table.push_back(fanuc);
   ArcSettings defaults;
+  defaults.check_circles = false;
   defaults.max_chord = 0;
   table.push_back(defaults);
   ArcSettings halves = fanuc;
