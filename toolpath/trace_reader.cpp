@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 
+#include "toolpath/bounded_read.hpp"
 #include "toolpath/trace_syntax.hpp"
 
 namespace toolpath {
@@ -210,7 +211,7 @@ void TraceReader::parse_body_line(Command& out, bool first_after_header, std::si
       parse_value_into(p.value, s.substr(v), Place{file_, line_number_, v + 1});
       return;
     }
-    fail(skip_blanks(s, i + n) + 1, "expected `:` after the parameter name `" + std::string(rest.substr(0, n)) + "`");
+    fail(skip_blanks(s, i + n) + 1, "expected `:` after the parameter name `" + excerpt(rest.substr(0, n)) + "`");
   }
   fail(i + 1, "expected `name : value`, `..>` continuation, `> ` output line or a command header");
 }

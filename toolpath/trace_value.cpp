@@ -3,6 +3,7 @@
 #include <charconv>
 #include <string>
 
+#include "toolpath/bounded_read.hpp"
 #include "toolpath/trace_reader.hpp"
 #include "toolpath/trace_syntax.hpp"
 
@@ -17,12 +18,12 @@ void store_number(Value& out, const NumberScan& n, std::string_view digits, Chan
   if (!n.numeric) {
     out.kind = ValueKind::Integer;
     auto [ptr, ec] = std::from_chars(first, last, out.integer);
-    if (ec != std::errc() || ptr != last) where.fail(0, "integer out of range: " + std::string(digits));
+    if (ec != std::errc() || ptr != last) where.fail(0, "integer out of range: " + excerpt(digits));
     return;
   }
   out.kind = ValueKind::Numeric;
   auto [ptr, ec] = std::from_chars(first, last, out.numeric);
-  if (ec != std::errc() || ptr != last) where.fail(0, "number out of range: " + std::string(digits));
+  if (ec != std::errc() || ptr != last) where.fail(0, "number out of range: " + excerpt(digits));
 }
 
 void parse_value_into(Value& out, std::string_view text, const Place& where) {

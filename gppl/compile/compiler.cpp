@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -24,16 +26,25 @@ constexpr int kMaxIncludeDepth = 16;
 // error rather than taking memory without bound.
 constexpr std::size_t kMaxSource = std::size_t{64} << 20;
 
-bool read_bytes(const std::string& path, std::string& out) {
+// Ok, or why the file is not read: it cannot be opened (error 399), or it was opened but is too
+// large or failed while being read (error 426, `detail` saying which).
+enum class ReadResult { Ok, CannotOpen, Failed };
+
+ReadResult read_bytes(const std::string& path, std::string& out, std::string& detail) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
+  if (!in) return ReadResult::CannotOpen;
   out.clear();
   char chunk[1 << 16];
   while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
     out.append(chunk, static_cast<std::size_t>(in.gcount()));
-    if (out.size() > kMaxSource) return false;
+    if (out.size() > kMaxSource) {
+      detail = "larger than 64 MiB: not a GPPL post?";
+      return ReadResult::Failed;
+    }
   }
-  return !in.bad();
+  if (!in.bad()) return ReadResult::Ok;
+  detail = std::string("read error: ") + std::strerror(errno);  // a folder: "Is a directory"
+  return ReadResult::Failed;
 }
 
 }  // namespace
@@ -74,9 +85,11 @@ std::uint32_t Compiler::add_global(GlobalVariable v) {
 std::shared_ptr<const Program> Compiler::compile_file(const std::string& path) {
   auto source = std::make_unique<SourceText>();
   source->name = path;
-  if (!read_bytes(path, source->bytes)) {
+  std::string detail;
+  if (const ReadResult r = read_bytes(path, source->bytes, detail); r != ReadResult::Ok) {
     program_->files.push_back(path);
-    errors_.push_back(make_error(ErrorCode::CantOpen, Position{path, 1, 1}, path));
+    errors_.push_back(r == ReadResult::CannotOpen ? make_error(ErrorCode::CantOpen, Position{path, 1, 1}, path)
+                                                  : make_error(ErrorCode::ReadError, Position{path, 1, 1}, path, detail));
     throw Errors(std::move(errors_));
   }
   std::error_code ec;
@@ -210,8 +223,12 @@ void Compiler::load_include(const ParsedLine& line, const SourceText& from, int 
     }
     auto source = std::make_unique<SourceText>();
     source->name = candidate.lexically_normal().string();
-    if (!read_bytes(source->name, source->bytes)) {
-      error(ErrorCode::ReadError, line.pos, source->name);
+    std::string detail;
+    if (const ReadResult r = read_bytes(source->name, source->bytes, detail); r != ReadResult::Ok) {
+      if (r == ReadResult::CannotOpen)
+        error(ErrorCode::CantOpen, line.pos, source->name);
+      else
+        error(ErrorCode::ReadError, line.pos, source->name, detail);
       return;
     }
     include_chain_.push_back(canonical);

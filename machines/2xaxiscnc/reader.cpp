@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "machines/2xaxiscnc/numbers.hpp"
+#include "toolpath/bounded_read.hpp"
 #include "toolpath/error.hpp"
 
 namespace twoaxis {
@@ -20,6 +21,8 @@ using toolpath::Value;
 namespace {
 
 constexpr std::size_t kChunk = 256 * 1024;
+// No program line comes near this (the trace and PikoCNC readers stop at the same length).
+constexpr std::size_t kMaxLine = std::size_t{16} << 20;
 constexpr double kMinCoef = 0.0001, kMaxCoef = 1.0;
 
 Value number(double v) { return Value::make_numeric(v); }
@@ -76,6 +79,9 @@ bool TwoAxisReader::next_line(std::string_view& line) {
       inputs_.pop_back();
       continue;
     }
+    if (left > kMaxLine)  // a binary file or a generator gone wrong: memory would grow without bound
+      throw toolpath::InputError({f.script.empty() ? file_name_ : f.script, f.line + 1, 1},
+                                 "line longer than 16 MiB: not a 2XAxisCNC program?");
     f.buffer.erase(0, f.pos);
     f.pos = 0;
     const std::size_t old = f.buffer.size();
@@ -99,14 +105,14 @@ bool TwoAxisReader::read_number(std::string_view text, std::size_t column, doubl
   switch (n.status) {
     case Number::Status::Malformed:
       diagnose(Diagnostic::Severity::Error, column,
-               fmt::format("malformed number `{}`: expected [-]digits[,digits]", text));
+               fmt::format("malformed number `{}`: expected [-]digits[,digits]", toolpath::excerpt(text)));
       return false;
     case Number::Status::OutOfRange:
-      diagnose(Diagnostic::Severity::Error, column, fmt::format("number `{}` is beyond the single-precision range", text));
+      diagnose(Diagnostic::Severity::Error, column, fmt::format("number `{}` is beyond the single-precision range", toolpath::excerpt(text)));
       return false;
     case Number::Status::NonPortable:
       diagnose(Diagnostic::Severity::Warning, column,
-               fmt::format("non-portable number `{}`: the application expects a decimal comma and no exponent", text));
+               fmt::format("non-portable number `{}`: the application expects a decimal comma and no exponent", toolpath::excerpt(text)));
       break;
     case Number::Status::Ok: break;
   }
@@ -228,7 +234,7 @@ void TwoAxisReader::move(const Frame& f, Command& out) {
     if (!(k >= lo && k <= kMaxCoef)) {
       const double clamped = k < lo ? lo : kMaxCoef;
       diagnose(Diagnostic::Severity::Error, f.columns[2],
-               fmt::format("speed coefficient {} out of range 0,0001..1: clamped to {}", f.commands[2],
+               fmt::format("speed coefficient {} out of range 0,0001..1: clamped to {}", toolpath::excerpt(f.commands[2]),
                            clamped == kMaxCoef ? "1" : "0,0001"));
       k = clamped;
     }

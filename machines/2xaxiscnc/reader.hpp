@@ -55,7 +55,9 @@ public:
   static std::unique_ptr<TwoAxisReader> from_string(std::string text, std::string file_name, Options options = {});
 
   // Never throws for errors in the program: each becomes a diagnostic and the frame is skipped
-  // (or its coefficient clamped), as the application would go on.
+  // (or its coefficient clamped), as the application would go on. Only a line longer than 16 MiB,
+  // in the program or a script (not a program: /dev/zero, a binary file), throws
+  // toolpath::InputError at that line.
   bool next(toolpath::Command& out) override;
 
   // Line of the command returned last, in the program or, for `script_name()`, in that script.

@@ -5,23 +5,32 @@
 #include <stdexcept>
 
 #include "postproc/engine/slot_marker.hpp"
+#include "toolpath/bounded_read.hpp"
 
 namespace postproc {
 namespace {
 
 class FileLines final : public ExpectedLines {
 public:
-  explicit FileLines(const std::string& path) : in_(path, std::ios::binary) {
+  explicit FileLines(const std::string& path) : path_(path), in_(path, std::ios::binary) {
     if (!in_) throw std::runtime_error(path + ": cannot open the expected output");
   }
   bool next(ExpectedLine& out) override {
-    if (!std::getline(in_, out.text)) return false;
+    // NC lines are short: a longer one (/dev/zero, a binary file) would only take memory.
+    const toolpath::LineRead got = toolpath::read_line(in_, out.text, kMaxLine);
+    if (got == toolpath::LineRead::End) return false;
+    ++line_;
+    if (got == toolpath::LineRead::TooLong)
+      throw std::runtime_error(fmt::format("{}:{}:1: line longer than 16 MiB: not an NC file?", path_, line_));
     if (!out.text.empty() && out.text.back() == '\r') out.text.pop_back();
     return true;
   }
 
 private:
+  static constexpr std::size_t kMaxLine = std::size_t{16} << 20;
+  std::string path_;
   std::ifstream in_;
+  std::size_t line_ = 0;
 };
 
 class TraceLines final : public ExpectedLines {

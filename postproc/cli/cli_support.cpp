@@ -3,8 +3,12 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <iostream>
+
+#include "toolpath/bounded_read.hpp"
 
 namespace postproc::cli {
 
@@ -22,6 +26,8 @@ std::vector<OptionSpec> engine_option_specs() {
 
 namespace {
 
+constexpr std::size_t kMaxAnswerLine = std::size_t{1} << 20;
+
 std::string_view trimmed(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
   while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
@@ -35,7 +41,12 @@ std::vector<gppl::Answer> read_answers_file(const std::string& path) {
   if (!in) throw std::runtime_error(path + ": cannot open the answers file");
   std::vector<gppl::Answer> answers;
   std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
+  for (std::size_t number = 1;; ++number) {
+    // Answers are short lines: a longer one (/dev/zero, a binary file) would only take memory.
+    const toolpath::LineRead got = toolpath::read_line(in, line, kMaxAnswerLine);
+    if (got == toolpath::LineRead::End) break;
+    if (got == toolpath::LineRead::TooLong)
+      throw std::runtime_error(fmt::format("{}:{}:1: line longer than 1 MiB: not an answers file?", path, number));
     const std::string_view text = trimmed(line);
     if (text.empty() || text.front() == '#') continue;
     const std::size_t eq = text.find('=');
@@ -43,10 +54,11 @@ std::vector<gppl::Answer> read_answers_file(const std::string& path) {
     if (name.empty()) {
       const std::size_t column = std::size_t(text.data() - line.data()) + 1;
       throw std::runtime_error(
-          fmt::format("{}:{}:{}: expected NAME=VALUE (or a # comment), not `{}`", path, number, column, text));
+          fmt::format("{}:{}:{}: expected NAME=VALUE (or a # comment), not `{}`", path, number, column, toolpath::excerpt(text)));
     }
     answers.push_back({std::string(name), std::string(trimmed(text.substr(eq + 1))), fmt::format("{}:{}", path, number)});
   }
+  if (in.bad()) throw std::runtime_error(fmt::format("{}: read error: {}", path, std::strerror(errno)));
   return answers;
 }
 

@@ -9,6 +9,7 @@
 
 #include "machines/pikocnc/script/script.hpp"
 #include "postproc/cli/cli.hpp"
+#include "toolpath/bounded_read.hpp"
 #include "toolpath/error.hpp"
 
 namespace postproc::cli {
@@ -17,12 +18,11 @@ namespace {
 
 namespace script = pikocnc::script;
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw toolpath::InputError({path, 0, 0}, "cannot read file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+// Scripts and their parameter files are kilobytes: a file past 16 MiB (/dev/zero, a wrong file)
+// is an error rather than memory taken without bound.
+std::string read_file(const std::string& path, std::string_view kind) {
+  return toolpath::read_file_bounded(path, std::size_t{16} << 20, fmt::format("larger than 16 MiB: not {}?", kind),
+                                     "cannot read file");
 }
 
 // NAME=VALUE from --arg / --const.
@@ -55,7 +55,7 @@ script::RunInputs inputs_from(const Arguments& args) {
     if (!answer) throw UsageError{fmt::format("--answer expects yes or no, got `{}`", a)};
     in.ordered_answers.push_back(*answer);
   }
-  if (args.has("--params")) script::read_parameters(read_file(args.value("--params")), args.value("--params"), in);
+  if (args.has("--params")) script::read_parameters(read_file(args.value("--params"), "a parameters file"), args.value("--params"), in);
   in.run_count = std::int32_t(number_option(args, "--run-count", 0) & 0x7fffffff);
   in.max_steps = number_option(args, "--max-steps", in.max_steps);
   in.describe_args = args.has("--describe-args");
@@ -68,7 +68,7 @@ int run_script(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (pos.size() != 2 || (pos[0] != "run" && pos[0] != "check"))
     throw UsageError{"expected `run FILE` or `check FILE`"};
   const std::string& path = pos[1];
-  const std::string text = read_file(path);
+  const std::string text = read_file(path, "a PikoCNC script");
   const auto program = script::parse_script(text, path);
   if (pos[0] == "check") {
     out << fmt::format("{}: ok\n", path);

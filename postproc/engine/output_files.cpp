@@ -21,6 +21,8 @@ constexpr std::size_t npos = static_cast<std::size_t>(-1);
 constexpr std::size_t kBufferSize = std::size_t{1} << 16;
 
 // Hands each complete line of `chunk` (LF or CR LF ends) to `line`; an unfinished one stays in `partial`.
+constexpr std::size_t kMaxCopiedLine = std::size_t{16} << 20;
+
 void split_lines(std::string_view chunk, std::string& partial, const OutputFiles::LineCallback& line) {
   for (;;) {
     std::size_t end = chunk.find('\n');
@@ -204,6 +206,10 @@ void OutputFiles::copy_into_current(std::string_view name, const LineCallback& c
     if (slots) note_copied_slots(std::string_view(buffer, n), entries_[current_].size, carry, !in);
     entries_[current_].size += n;
     if (copied_line) split_lines(std::string_view(buffer, n), partial, copied_line);
+    // The lines are handed on one by one: a file in the folder without line ends (a binary
+    // file, a link to a device) must not gather in memory.
+    if (partial.size() > kMaxCopiedLine)
+      throw std::runtime_error("cannot copy `" + std::string(name) + "`: line longer than 16 MiB: not an NC file?");
   }
   if (copied_line && !partial.empty()) copied_line(partial);
 }

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 
+#include "toolpath/bounded_read.hpp"
 #include "toolpath/error.hpp"
 
 namespace postproc {
@@ -32,8 +33,8 @@ std::string shown(const toolpath::Value& v) {
     case ValueKind::Integer: return fmt::format("{}", v.integer);
     case ValueKind::Numeric: return fmt::format("{}", v.numeric);
     case ValueKind::Logical: return v.logical ? "TRUE" : "FALSE";
-    case ValueKind::String: return fmt::format("'{}'", v.text);
-    case ValueKind::Enum: return v.text;
+    case ValueKind::String: return fmt::format("'{}'", toolpath::excerpt(v.text));  // a value may be megabytes
+    case ValueKind::Enum: return toolpath::excerpt(v.text);
   }
   return {};
 }

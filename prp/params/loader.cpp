@@ -1,12 +1,11 @@
 #include "prp/params/loader.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 
 #include "prp/params/grammar.hpp"
+#include "toolpath/bounded_read.hpp"
 
 namespace prp {
 namespace {
@@ -286,16 +285,11 @@ MachineParameters defaults(Units units) {
 }
 
 MachineParameters load_file(const std::string& path, Units units) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw toolpath::InputError({path, 0, 0}, "cannot open the PRP file");
-  // PRP files are a few kilobytes: a huge one is a wrong file, and would only take memory.
-  in.seekg(0, std::ios::end);
-  if (const auto size = in.tellg(); size > std::streamoff{64} << 20)
-    throw toolpath::InputError({path, 0, 0}, "larger than 64 MiB: not a PRP file?");
-  in.seekg(0);
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return load_source(buffer.str(), path, units);
+  // PRP, .MAC and VMID files are a few kilobytes: a huge one is a wrong file, and would only take
+  // memory. Read in chunks: a device (/dev/zero) reports no size to check first.
+  const std::string text =
+      toolpath::read_file_bounded(path, std::size_t{64} << 20, "larger than 64 MiB: not a PRP file?", "cannot open the PRP file");
+  return load_source(text, path, units);
 }
 
 }  // namespace prp

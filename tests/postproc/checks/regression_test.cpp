@@ -1,7 +1,12 @@
 // Line comparison options and the streaming regression comparer.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <deque>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
 
 #include "postproc/checks/line_compare.hpp"
 #include "postproc/checks/regression.hpp"
@@ -123,6 +128,42 @@ TEST(RegressionComparer, ExpectedLinesOfATraceAreItsOutputLinesInOrder) {
   while (lines->next(l)) texts.push_back(l.text);
   EXPECT_EQ(texts, (std::vector<std::string>{"%", "N10 ; PART", "N20 G17 G90 ", "!! open file = F_contour1.SPF !!",
                                              "N290 S1910", "N300 G1 X70 Z20.14 F2292", "N400 M30"}));
+}
+
+}  // namespace
+
+namespace {
+
+// The expected NC file is read a line at a time up to 16 MiB a line: /dev/zero or a binary file is
+// an error naming the file and line, not memory taken without bound (docs/reliability.md).
+TEST(Regression, ExpectedLinesLongerThan16MiBAreAnError) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("regression_test_" + std::to_string(::getpid()) + ".nc");
+  std::ofstream(file, std::ios::binary) << "N10 G0 X0\r\nN20 M30\n";
+  std::filesystem::resize_file(file, std::uintmax_t{17} << 20);  // a sparse third line of 17 MiB of zeros
+  const struct {
+    const char* name;
+    std::string path;
+    std::vector<std::string> lines;  // read before the error
+    std::string error;
+  } cases[] = {
+      {"Device", "/dev/zero", {}, "/dev/zero:1:1: line longer than 16 MiB: not an NC file?"},
+      {"ThirdLine", file.string(), {"N10 G0 X0", "N20 M30"}, file.string() + ":3:1: line longer than 16 MiB: not an NC file?"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    auto expected = postproc::expected_from_file(c.path);
+    std::vector<std::string> lines;
+    std::string error = "no error";
+    try {
+      for (postproc::ExpectedLine line; expected->next(line);) lines.push_back(line.text);
+    } catch (const std::runtime_error& e) {
+      error = e.what();
+    }
+    EXPECT_EQ(lines, c.lines);
+    EXPECT_EQ(error, c.error);
+  }
+  std::filesystem::remove(file);
 }
 
 }  // namespace

@@ -147,6 +147,24 @@ TEST_F(OutputFilesTest, CopyOfAMissingFileIsAnError) {
   }
 }
 
+// `copy file` of an old file of the folder without line ends, its lines followed (test, verify):
+// an error at 16 MiB instead of a line gathered without bound.
+TEST_F(OutputFilesTest, CopyOfAFileWithoutLineEndsStopsAt16MiB) {
+  std::ofstream(dir / "OLD.NC", std::ios::binary) << "N10\n";
+  fs::resize_file(dir / "OLD.NC", std::uintmax_t{17} << 20);  // sparse: a second line of 17 MiB of zeros
+  std::vector<std::string> lines;
+  {
+    OutputFiles out(dir);
+    try {
+      out.execute({Verb::Copy, "OLD.NC"}, [&](std::string_view line) { lines.emplace_back(line); });
+      ADD_FAILURE() << "no error";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "cannot copy `OLD.NC`: line longer than 16 MiB: not an NC file?");
+    }
+  }
+  EXPECT_EQ(lines, std::vector<std::string>{"N10"});
+}
+
 TEST_F(OutputFilesTest, StreamOutputNamesFilesOnlyWhenThereAreSeveral) {
   {
     OutputFiles out(dir, OutputFiles::LineEnd::LF, true);

@@ -22,7 +22,7 @@ TEST(ParameterCheck, KindMismatchTable) {
   struct Case {
     ParameterKind kind;
     Value value;
-    const char* problem;  // "" when accepted
+    std::string problem;  // "" when accepted
   } cases[] = {
       {ParameterKind::Numeric, Value::make_numeric(1.5), ""},
       {ParameterKind::Numeric, Value::make_integer(3), ""},
@@ -44,9 +44,12 @@ TEST(ParameterCheck, KindMismatchTable) {
       {ParameterKind::Enum, Value::make_enum("CW"), ""},
       {ParameterKind::Enum, Value::make_integer(1), ""},
       {ParameterKind::Enum, Value::make_string("CW"), "expected an enumeration word (such as CW or COMP_LEFT), not 'CW'"},
+      // a value of megabytes is quoted by its first 40 characters
+      {ParameterKind::Numeric, Value::make_string(std::string(2 << 20, 'a')), "expected a number, not '" + std::string(40, 'a') + "...'"},
+      {ParameterKind::Logical, Value::make_enum(std::string(2 << 20, 'b')), "expected TRUE, FALSE, 0 or 1, not " + std::string(40, 'b') + "..."},
   };
   for (const auto& c : cases)
-    EXPECT_EQ(postproc::kind_mismatch(c.kind, c.value), c.problem) << int(c.kind) << " " << c.value.text;
+    EXPECT_EQ(postproc::kind_mismatch(c.kind, c.value), c.problem) << int(c.kind) << " " << c.value.text.substr(0, 50);
 }
 
 // The message `read` and `run` give for a job, or "" when it reads through; the warnings, one per
