@@ -72,7 +72,8 @@ private:
   std::size_t line_ = 0;
 };
 
-std::string quoted(std::string_view s) { return fmt::format("`{}`", s); }
+// NC lines are short; a line of megabytes (a wrong file) is shown by its start.
+std::string quoted(std::string_view s) { return fmt::format("`{}`", toolpath::excerpt(s, 200)); }
 
 }  // namespace
 

@@ -213,7 +213,7 @@ void Loader::remember_unknown(std::string_view original, std::string_view key, s
     *it = std::move(u);  // the last value wins, as for known keys; warned about once
     return;
   }
-  warning(key_column, fmt::format("unknown key `{}`: kept as text for the post", key));
+  warning(key_column, fmt::format("unknown key `{}`: kept as text for the post", toolpath::excerpt(key)));
   params_.unknown_.push_back(std::move(u));
 }
 

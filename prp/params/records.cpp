@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "prp/params/grammar.hpp"
+#include "toolpath/bounded_read.hpp"
 #include "prp/params/loader.hpp"
 
 namespace prp {
@@ -71,7 +72,7 @@ void Loader::record(std::string_view base, std::string_view lang, std::string_vi
       auto b = drill_base(t[0].text);
       if (!b)
         return error(t[0].column, fmt::format("expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, "
-                                              "BORING, R_BORING, F_BORING or None), found `{}`", t[0].text));
+                                              "BORING, R_BORING, F_BORING or None), found `{}`", toolpath::excerpt(t[0].text)));
       r.base = std::string(*b);
     }
   } else if (t.size() >= 3 && flag_word(t[2].text) && (base == "drill_type" || base == "wc_macro")) {
@@ -81,7 +82,7 @@ void Loader::record(std::string_view base, std::string_view lang, std::string_vi
       auto b = drill_base(t[1].text);
       if (!b)
         return error(t[1].column, fmt::format("expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, "
-                                              "BORING, R_BORING, F_BORING or None), found `{}`", t[1].text));
+                                              "BORING, R_BORING, F_BORING or None), found `{}`", toolpath::excerpt(t[1].text)));
       r.base = std::string(*b);
     } else {
       r.base = std::string(t[1].text);

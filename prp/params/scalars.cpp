@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "prp/params/grammar.hpp"
+#include "toolpath/bounded_read.hpp"
 #include "prp/params/loader.hpp"
 
 namespace prp {
@@ -68,7 +69,7 @@ bool Loader::parse_scalar(const KeyInfo& info, std::string_view value, std::size
     case ValueKind::Logical: {
       if (tokens.empty()) return error(column, "expected Y or N"), false;
       auto v = parse_logical(tokens[0].text);
-      if (!v) return error(tokens[0].column, fmt::format("expected Y or N, found `{}`", tokens[0].text)), false;
+      if (!v) return error(tokens[0].column, fmt::format("expected Y or N, found `{}`", toolpath::excerpt(tokens[0].text))), false;
       out.logical = *v;
       for (std::size_t i = 1; i < tokens.size(); ++i) out.extra.emplace_back(tokens[i].text);
       return true;
@@ -78,7 +79,7 @@ bool Loader::parse_scalar(const KeyInfo& info, std::string_view value, std::size
       if (tokens.empty()) return error(column, "expected an integer"), false;
       const Token& t = tokens[0];
       if (!grammar::matches<grammar::integer>(t.text))
-        return error(t.column, fmt::format("expected an integer, found `{}`", t.text)), false;
+        return error(t.column, fmt::format("expected an integer, found `{}`", toolpath::excerpt(t.text))), false;
       std::string_view digits = t.text[0] == '+' ? t.text.substr(1) : t.text;
       std::int64_t v = 0;
       auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
@@ -96,7 +97,7 @@ bool Loader::parse_scalar(const KeyInfo& info, std::string_view value, std::size
       bool known = std::any_of(info.choices.begin(), info.choices.end(),
                                [&](std::string_view c) { return toolpath::iequals(c, t.text); });
       if (!known) {
-        std::string message = fmt::format("expected {}, found `{}`", join_choices(info.choices), t.text);
+        std::string message = fmt::format("expected {}, found `{}`", join_choices(info.choices), toolpath::excerpt(t.text));
         if (!info.unknown_choice_is_warning) return error(t.column, message), false;
         warning(t.column, message + " (kept)");
       }
@@ -119,7 +120,7 @@ bool Loader::parse_scalar(const KeyInfo& info, std::string_view value, std::size
           continue;
         }
         if (count == (comma ? 2 * per_half : per_half) || !grammar::matches<grammar::number>(t.text))
-          return error(t.column, expected + fmt::format(", found `{}`", t.text)), false;
+          return error(t.column, expected + fmt::format(", found `{}`", toolpath::excerpt(t.text))), false;
         double d = 0;
         auto [ptr, ec] = std::from_chars(t.text.data() + (t.text[0] == '+'), t.text.data() + t.text.size(), d);
         if (ec != std::errc{} || std::abs(d) > kNumberLimit)

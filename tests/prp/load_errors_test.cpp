@@ -20,8 +20,8 @@ std::string load_error(const std::string& body) {
 
 struct ErrorCase {
   const char* name;
-  const char* text;
-  const char* expected;
+  std::string text;
+  std::string expected;
 };
 
 class LoadErrors : public testing::TestWithParam<ErrorCase> {};
@@ -49,6 +49,9 @@ const ErrorCase kErrorCases[] = {
      "t.prp:2:14: number out of range (-1E300 .. 1E300)"},
     {"Enumeration", "@pre_processor\nmachine_plane = XZ\nendp\n",
      "t.prp:2:17: expected XY, YZ, ZX or ZC, found `XZ`"},
+    // A wrong file's megabyte token is quoted by its start.
+    {"LongToken", "@pre_processor\nmachine_plane = " + std::string(100000, 'Q') + "\nendp\n",
+     "t.prp:2:17: expected XY, YZ, ZX or ZC, found `" + std::string(40, 'Q') + "...`"},
     {"NoHeader", "; comment\narc_exist = Y\nendp\n", "t.prp:2:1: expected `@pre_processor` before the first statement"},
     {"EmptyFile", "", "t.prp:1:1: expected `@pre_processor`: the file has no parameter section"},
     {"NoEndp", "@pre_processor\narc_exist = Y",
