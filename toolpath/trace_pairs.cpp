@@ -101,7 +101,7 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   // Where the next pair starts when the value's first token, ending at `k`, is followed by blanks
   // and the next `name:` (then in `next`) or by the end of the line (text.size()); npos otherwise.
   PairName next;
-  auto next_pair_after = [&](std::size_t k) {
+  auto next_pair_after = [&](std::size_t k) __attribute__((always_inline)) {
     if (k == text.size()) return k;
     if (!is_blank(text[k])) return std::string_view::npos;
     std::size_t m = k + 1;
