@@ -100,6 +100,7 @@ bool TraceReader::next(Command& out) {
   out.trace.clear();
   used_parameters_ = 0;
   have_line_ = false;
+  const bool fresh = out.parameters.capacity() == 0;
   if (!parse_header(out)) {
     std::size_t col = skip_blanks(line_, 0) + 1;
     fail(col, "expected a command header `(N)@name` or `@name`");
@@ -119,6 +120,7 @@ bool TraceReader::next(Command& out) {
     first = false;
   }
   out.parameters.resize(used_parameters_);
+  if (fresh) shelf_.keep(out);
   return true;
 }
 
