@@ -141,6 +141,7 @@ constexpr Range kRanges[] = {
 // decides by the general rule, so a bit left out costs time, never a verdict. The key `none`
 // marks nothing: a name outside the key list is looked up by name.
 struct KeyCheck {
+  double low = -kInf, high = kInf;  // kRanges[range], kept here: no second load
   std::uint16_t need = 0;
   std::uint8_t ok = 0;
   std::uint8_t range = kAnyNumber;
@@ -177,6 +178,7 @@ const std::array<KeyCheck, toolpath::param_key_count + 1>& key_checks() {
                                                 {K::xcenter, kXcentre}, {K::ycenter, kYcentre},  {K::xcenter_rel, kXrel},
                                                 {K::ycenter_rel, kYrel}, {K::tool_number, kTool}};
     for (auto [key, need] : bits) t[static_cast<std::size_t>(key)].need = static_cast<std::uint16_t>(need);
+    for (KeyCheck& c : t) c.low = kRanges[c.range].low, c.high = kRanges[c.range].high;
     return t;
   }();
   return table;
@@ -251,13 +253,12 @@ bool ParameterCheck::next(toolpath::Command& out) {
   const auto& checks = key_checks();
   std::uint32_t present = 0;
   for (const toolpath::Parameter& p : out.parameters) {
-    const KeyCheck e = checks[static_cast<std::size_t>(p.key)];
+    const KeyCheck& e = checks[static_cast<std::size_t>(p.key)];
     present |= e.need;
     const auto vk = static_cast<unsigned>(p.value.kind);
     if ((e.ok >> vk) & 1u) {
       if (p.value.kind != ValueKind::Numeric) continue;
-      const Range& r = kRanges[e.range];
-      if (p.value.numeric >= r.low && p.value.numeric <= r.high) continue;  // false for NaN
+      if (p.value.numeric >= e.low && p.value.numeric <= e.high) continue;  // false for NaN
     }
     check_slow(out, p);
   }
