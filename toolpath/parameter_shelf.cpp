@@ -31,4 +31,20 @@ void ParameterShelf::exchange(Command& out, std::string_view name) {
   e.label = returned;
 }
 
+void ParameterShelf::keep(const Command& c) {
+  const Label label = label_of(c.name);
+  if (label.size == 0 || c.parameters.empty()) return;
+  Entry* unused = nullptr;
+  for (Entry& e : entries_) {
+    if (e.label == label) return;
+    if (!unused && e.label.size == 0 && e.parameters.capacity() == 0) unused = &e;
+  }
+  if (!unused) {  // the one-off commands at the start of a job make way for the repeated ones
+    unused = &entries_[victim_];
+    victim_ = (victim_ + 1) % entries_.size();
+  }
+  unused->parameters = c.parameters;
+  unused->label = label;
+}
+
 }  // namespace toolpath

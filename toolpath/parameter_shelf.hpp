@@ -28,6 +28,12 @@ public:
     if (!same_short_text(out.name, name)) exchange(out, name);
   }
 
+  // `c` was read into a fresh vector (no buffers handed back yet: the pipeline filling up). When
+  // no entry has c's name, a copy of its parameters goes to an unused entry or the next one to
+  // replace, so that the next fresh command of that name starts from a copy instead of naming
+  // every slot again.
+  void keep(const Command& c);
+
 private:
   void exchange(Command& out, std::string_view name);
 

@@ -100,28 +100,34 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   }
   // Where the next pair starts when the value's first token, ending at `k`, is followed by blanks
   // and the next `name:` (then in `next`) or by the end of the line (text.size()); npos otherwise.
+  // The slots used so far, in a register while the pairs are read (the stores into the values
+  // could alias a member); written back to used_parameters_ before each return.
+  std::size_t used = used_parameters_;
   PairName next;
-  auto next_pair_after = [&](std::size_t k) {
+  auto next_pair_after = [&](std::size_t k) __attribute__((always_inline)) {
     if (k == text.size()) return k;
     if (!is_blank(text[k])) return std::string_view::npos;
     std::size_t m = k + 1;
     if (is_blank(text.data()[m])) m = skip_blanks(text, m);
     if (m == text.size()) return m;
-    next = name_at(slots, used_parameters_, text, m);
+    next = name_at(slots, used, text, m);
     return next.length > 0 ? m : std::string_view::npos;
   };
   for (;;) {
     // Here `name` is the `name:` at i.
     Parameter* param_slot;
     if (name.in_slot) {
-      param_slot = &out.parameters[used_parameters_++];
+      param_slot = &out.parameters[used++];
     } else {
-      param_slot = &add_parameter(out, used_parameters_, text.substr(i, name.length));
+      std::size_t count = used;  // its address goes to new_slot, not used's
+      param_slot = &add_parameter(out, count, text.substr(i, name.length));
+      used = count;
       slots = Slots(out);  // it may have added a slot
     }
     Parameter& param = *param_slot;
     const std::size_t v = i + name.length + 1;
-    mark_position(param, line_number_, column + v);
+    param.line = line32_;
+    param.column = static_cast<std::uint32_t>(column + v);  // below 2^32: see kMaxLine
     const char first = text.data()[v];  // the terminator when the value is empty
     std::size_t end;
     if (first == '\'' || first == '"') {
@@ -143,7 +149,7 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
       if (const std::size_t m = next_pair_after(k); m != std::string_view::npos) {
         if (!store_exact_number(param.value, number, flag))
           store_number(param.value, number, text.substr(v, number.length), flag, Place{file_, line_number_, column + v});
-        if (m == text.size()) return;
+        if (m == text.size()) return void(used_parameters_ = used);
         i = m;
         name = next;
         continue;
@@ -155,7 +161,7 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
       while (is_ident_char(text.data()[k])) ++k;
       if (const std::size_t m = next_pair_after(k); m != std::string_view::npos) {
         store_word(param.value, text.substr(v, k - v));
-        if (m == text.size()) return;
+        if (m == text.size()) return void(used_parameters_ = used);
         i = m;
         name = next;
         continue;
@@ -166,8 +172,8 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
     }
     parse_value_into(param.value, text.substr(v, end - v), Place{file_, line_number_, column + v});
     i = skip_blanks(text, end);
-    if (i == text.size()) return;
-    name = name_at(slots, used_parameters_, text, i);
+    if (i == text.size()) return void(used_parameters_ = used);
+    name = name_at(slots, used, text, i);
     if (name.length == 0) fail(column + i, "expected `name:value`");
   }
 }

@@ -21,6 +21,9 @@ constexpr std::size_t kChunk = 1 << 18;
 // No trace line comes near this; a longer one (a binary file, a runaway generator) would only
 // take memory without bound.
 constexpr std::size_t kMaxLine = std::size_t{16} << 20;
+// A line holds at most kMaxLine bytes and two chunks more (the carry check comes after a chunk is
+// appended): a column always fits the 32 bits a Parameter keeps (parse_pairs stores it as is).
+static_assert(kMaxLine + 2 * kChunk < 0xffffffff);
 
 }  // namespace
 
@@ -81,6 +84,7 @@ bool TraceReader::read_line() {
   }
   if (!line_.empty() && line_.back() == '\r') line_.remove_suffix(1);
   ++line_number_;
+  line32_ = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
   return true;
 }
 
@@ -97,12 +101,13 @@ bool TraceReader::next(Command& out) {
   out.trace.clear();
   used_parameters_ = 0;
   have_line_ = false;
+  const bool fresh = out.parameters.capacity() == 0;
   if (!parse_header(out)) {
     std::size_t col = skip_blanks(line_, 0) + 1;
     fail(col, "expected a command header `(N)@name` or `@name`");
   }
   out.index = next_index_++;
-  out.line = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
+  out.line = line32_;
   bool first = true;
   while (read_line()) {
     std::size_t i = skip_blanks(line_, 0);
@@ -116,6 +121,7 @@ bool TraceReader::next(Command& out) {
     first = false;
   }
   out.parameters.resize(used_parameters_);
+  if (fresh) shelf_.keep(out);
   return true;
 }
 

@@ -53,6 +53,7 @@ private:
   std::string_view line_;
   std::string carry_;            // a line cut by the end of a chunk, put together
   std::size_t line_number_ = 0;
+  std::uint32_t line32_ = 0;     // line_number_ as positions keep it (saturating at 2^32 - 1)
   bool have_line_ = false;       // line_ holds a header not yet consumed
   std::size_t next_index_ = 0;
   std::size_t used_parameters_ = 0; // parameter slots of the command being read

@@ -166,7 +166,7 @@ inline NumberScan scan_terminated_number(const char* s) {
   n.digits = digits;
   n.mantissa = mantissa;
   if (digits == 0) return n;
-  if (*p == 'e' || *p == 'E') {
+  if ((*p | 0x20) == 'e') {  // 'e' or 'E', no other byte
     const char* q = p + 1;
     if (*q == '+' || *q == '-') ++q;
     const char* exp_start = q;

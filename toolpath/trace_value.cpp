@@ -5,6 +5,7 @@
 
 #include "toolpath/bounded_read.hpp"
 #include "toolpath/trace_reader.hpp"
+#include "toolpath/short_text.hpp"
 #include "toolpath/trace_syntax.hpp"
 
 namespace toolpath {
@@ -55,13 +56,14 @@ void parse_value_into(Value& out, std::string_view text, const Place& where) {
 
 void store_word(Value& out, std::string_view word) {
   out.flag = ChangeFlag::None;
-  if (iequals(word, "true") || iequals(word, "false")) {
+  if ((word.size() == 4 || word.size() == 5) && (iequals(word, "true") || iequals(word, "false"))) {
     out.kind = ValueKind::Logical;
     out.logical = iequals(word, "true");
     return;
   }
   out.kind = ValueKind::Enum;
-  out.text.assign(word);
+  // A recycled slot mostly holds the same word (`arc_direction:CCW` command after command).
+  if (!same_short_text(out.text, word)) out.text.assign(word);
 }
 
 }  // namespace trace_syntax

@@ -5,9 +5,12 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 #include "toolpath/bounded_read.hpp"
 #include "toolpath/error.hpp"
+#include "toolpath/short_text.hpp"
 
 namespace postproc {
 namespace {
@@ -100,23 +103,83 @@ constexpr Required kRequired[] = {
     {"@change_tool", kTool},
 };
 
-int required_of(std::string_view name) {
-  for (int i = 0; i < int(std::size(kRequired)); ++i)
-    if (name.size() == kRequired[i].command.size() && toolpath::iequals(name, kRequired[i].command)) return i;
-  return -1;
+// The entry of kRequired for command `name`, -1 for none: by length first (each command of the
+// list has its own length but @drill_point and @change_tool), then one comparison.
+inline int required_of(std::string_view name) {
+  auto is = [&](int i) { return toolpath::iequals(name, kRequired[i].command); };
+  switch (name.size()) {
+    case 4: return is(2) ? 2 : -1;
+    case 5: return is(1) ? 1 : -1;
+    case 11: return is(0) ? 0 : -1;
+    case 12: return is(3) ? 3 : is(4) ? 4 : -1;
+    default: return -1;
+  }
 }
+static_assert(kRequired[0].command.size() == 11 && kRequired[1].command.size() == 5 && kRequired[2].command.size() == 4 &&
+              kRequired[3].command.size() == 12 && kRequired[4].command.size() == 12 && std::size(kRequired) == 5);
 
 // The Need bit each keyed parameter stands for (the centre counts in halves, put together below).
 enum Half : std::uint32_t { kXcentre = 128, kYcentre = 256, kXrel = 512, kYrel = 1024 };
-const std::array<std::uint16_t, toolpath::param_key_count + 1>& need_by_key() {
+
+// The fast path's ranges for a Numeric value (`low <= x <= high`, which NaN fails).
+struct Range {
+  double low, high;
+};
+enum : std::uint8_t { kFinite, kIntegerRange, kFeedRange, kRadiusRange, kAnyNumber };
+constexpr double kMax = std::numeric_limits<double>::max();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr Range kRanges[] = {
+    {-kMax, kMax},                                           // a Numeric parameter: finite
+    {-999999999.0, 999999999.0},                             // an Integer parameter
+    {0.0, kMax},                                             // feed: 0 or more
+    {std::numeric_limits<double>::denorm_min(), kMax},       // radius: above 0
+    {-kInf, kInf},                                           // an Enum parameter, or none in the catalogue
+};
+
+// Per key: the Need bit it stands for (the centre counts in halves, put together in next()), and
+// the value kinds (bit 1 << ValueKind) that `accepts` and `in_range` surely take for it; a Numeric
+// value also has to lie in kRanges[range]. What is not marked here goes to check_slow, which
+// decides by the general rule, so a bit left out costs time, never a verdict. The key `none`
+// marks nothing: a name outside the key list is looked up by name.
+struct KeyCheck {
+  double low = -kInf, high = kInf;  // kRanges[range], kept here: no second load
+  std::uint16_t need = 0;
+  std::uint8_t ok = 0;
+  std::uint8_t range = kAnyNumber;
+};
+const std::array<KeyCheck, toolpath::param_key_count + 1>& key_checks() {
   static const auto table = [] {
-    std::array<std::uint16_t, toolpath::param_key_count + 1> t{};
+    std::array<KeyCheck, toolpath::param_key_count + 1> t{};
     using K = toolpath::ParamKey;
+    constexpr auto bit = [](ValueKind k) { return static_cast<std::uint8_t>(1u << static_cast<unsigned>(k)); };
+    const std::uint8_t I = bit(ValueKind::Integer), N = bit(ValueKind::Numeric), L = bit(ValueKind::Logical),
+                       S = bit(ValueKind::String), E = bit(ValueKind::Enum);
+    const auto& kinds = kinds_by_key();
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      if (k == static_cast<std::size_t>(K::none)) continue;
+      KeyCheck& c = t[k];
+      switch (kinds[k]) {
+        case int(ParameterKind::Numeric): c.ok = I | N | L, c.range = kFinite; break;
+        case int(ParameterKind::Integer): c.ok = I | N | L | E, c.range = kIntegerRange; break;
+        case int(ParameterKind::Logical): c.ok = L; break;  // numbers: 0 or 1, by the general rule
+        case int(ParameterKind::String): c.ok = S | E; break;
+        case int(ParameterKind::Enum): c.ok = I | N | L | E; break;
+        default: c.ok = I | N | L | S | E; break;  // not in the catalogue: nothing to check
+      }
+    }
+    // in_range: a feed of 0 or more, a radius above 0 (integers take the general rule).
+    for (auto [key, range] : {std::pair{K::feed, kFeedRange}, std::pair{K::radius, kRadiusRange}}) {
+      KeyCheck& c = t[static_cast<std::size_t>(key)];
+      const bool numeric = kinds[static_cast<std::size_t>(key)] == int(ParameterKind::Numeric);
+      c.ok = numeric ? static_cast<std::uint8_t>(c.ok & ~I) : 0;
+      c.range = range;
+    }
     const std::pair<K, std::uint32_t> bits[] = {{K::xpos, kX},          {K::ypos, kY},           {K::zpos, kZ},
                                                 {K::feed, kFeed},       {K::arc_direction, kDirection},
                                                 {K::xcenter, kXcentre}, {K::ycenter, kYcentre},  {K::xcenter_rel, kXrel},
                                                 {K::ycenter_rel, kYrel}, {K::tool_number, kTool}};
-    for (auto [key, bit] : bits) t[static_cast<std::size_t>(key)] = static_cast<std::uint16_t>(bit);
+    for (auto [key, need] : bits) t[static_cast<std::size_t>(key)].need = static_cast<std::uint16_t>(need);
+    for (KeyCheck& c : t) c.low = kRanges[c.range].low, c.high = kRanges[c.range].high;
     return t;
   }();
   return table;
@@ -166,48 +229,67 @@ ParameterCheck::ParameterCheck(toolpath::CommandSource& inner, std::string file_
     : inner_(inner), file_(std::move(file_name)), warn_(std::move(warn)) {}
 
 int ParameterCheck::unkeyed_kind(const toolpath::Parameter& p) {
-  auto it = unkeyed_.find(p.name);
+  const std::string& name = p.name;
+  const std::size_t n = name.size();
+  const std::uint64_t head = toolpath::load_word(name, 0, n < 8 ? n : 8);
+  RecentName& recent = recent_unkeyed_[((head ^ n) * 0x9E3779B97F4A7C15ull) >> 58];
+  if (recent.kind != -2 && toolpath::same_short_text(recent.name, name)) return recent.kind;
+  auto it = unkeyed_.find(name);
   if (it == unkeyed_.end()) {
     if (unkeyed_.size() > 4096) unkeyed_.clear();  // a stream of ever new names: keep memory flat
-    const ParameterSpec* spec = find_parameter(p.name);
-    it = unkeyed_.emplace(p.name, spec ? static_cast<int>(spec->kind) : -1).first;
+    const ParameterSpec* spec = find_parameter(name);
+    it = unkeyed_.emplace(name, spec ? static_cast<int>(spec->kind) : -1).first;
   }
+  recent.name.assign(name);
+  recent.kind = it->second;
   return it->second;
 }
 
+// One load per parameter decides the common case: the Need bit the parameter stands for, and the
+// value kinds its catalogue kind takes as they are (see key_checks). Anything else, and every
+// parameter without a key, goes to check_slow, which applies the general rule.
 bool ParameterCheck::next(toolpath::Command& out) {
   if (!inner_.next(out)) return false;
   if (!out.is_stream_command()) return true;  // what the original post did itself: kept as written
-  const auto& by_key = kinds_by_key();
-  const auto& needs = need_by_key();
+  const auto& checks = key_checks();
   std::uint32_t present = 0;
   for (const toolpath::Parameter& p : out.parameters) {
-    const auto k = static_cast<std::size_t>(p.key);
-    present |= needs[k];
-    const int kind = p.key != toolpath::ParamKey::none ? by_key[k] : unkeyed_kind(p);
-    if (kind < 0) continue;
-    if (accepts(static_cast<ParameterKind>(kind), p.value) && in_range(p)) continue;
-    std::string problem = kind_mismatch(static_cast<ParameterKind>(kind), p.value);
-    if (problem.empty()) problem = value_problem(out, p);
-    if (problem.empty()) continue;
-    throw toolpath::InputError({file_, p.line, p.column},
-                               fmt::format("parameter `{}` of {}: {}", p.name, out.name, problem));
+    const KeyCheck& e = checks[static_cast<std::size_t>(p.key)];
+    present |= e.need;
+    const auto vk = static_cast<unsigned>(p.value.kind);
+    if ((e.ok >> vk) & 1u) {
+      if (p.value.kind != ValueKind::Numeric) continue;
+      if (p.value.numeric >= e.low && p.value.numeric <= e.high) continue;  // false for NaN
+    }
+    check_slow(out, p);
   }
   if (((present & kXcentre) && (present & kYcentre)) || ((present & kXrel) && (present & kYrel))) present |= kCentre;
   // Only what was read from a trace: a controller model's stream (2XAxisCNC has no Z), read
   // directly or from the trace `postproc read --dialect` wrote (its @start_of_file names the
   // dialect), or a generated one carries what its machine has.
   if (out.line != 0 && !read_back_) {
-    if (toolpath::iequals(out.name, "@start_of_file") && out.find("dialect")) read_back_ = true;
-    else check_required(out, present);
+    if (const int r = required_of(out.name); r >= 0 && (kRequired[r].needs & ~present) != 0)
+      report_missing(out, r, present);
+    else if (r < 0 && toolpath::iequals(out.name, "@start_of_file") && out.find("dialect"))
+      read_back_ = true;
   }
   given_ |= present;
   return true;
 }
 
-void ParameterCheck::check_required(const toolpath::Command& c, std::uint32_t present) {
-  const int r = required_of(c.name);
-  if (r < 0) return;
+// The general rule for one parameter: its catalogue kind (from its key, or looked up by name),
+// the value's kind and range; throws at the value's position when they do not agree.
+void ParameterCheck::check_slow(const toolpath::Command& out, const toolpath::Parameter& p) {
+  const int kind = p.key != toolpath::ParamKey::none ? kinds_by_key()[static_cast<std::size_t>(p.key)] : unkeyed_kind(p);
+  if (kind < 0) return;
+  if (accepts(static_cast<ParameterKind>(kind), p.value) && in_range(p)) return;
+  std::string problem = kind_mismatch(static_cast<ParameterKind>(kind), p.value);
+  if (problem.empty()) problem = value_problem(out, p);
+  if (problem.empty()) return;
+  throw toolpath::InputError({file_, p.line, p.column}, fmt::format("parameter `{}` of {}: {}", p.name, out.name, problem));
+}
+
+void ParameterCheck::report_missing(const toolpath::Command& c, int r, std::uint32_t present) {
   const std::uint32_t lacking = kRequired[r].needs & ~present;
   if (!lacking) return;
   const std::uint32_t need = kRequired[r].needs;

@@ -4,6 +4,7 @@
 // `postproc read` and the engine both put it right behind the reader.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -34,7 +35,10 @@ public:
   bool next(toolpath::Command& out) override;
 
 private:
-  void check_required(const toolpath::Command& c, std::uint32_t present);
+  void check_slow(const toolpath::Command& c, const toolpath::Parameter& p);
+  // Command `c`, entry `r` of the required-parameter list, lacks some of them: an error when no
+  // command gave one before, else a warning (once per command and parameter).
+  void report_missing(const toolpath::Command& c, int r, std::uint32_t present);
 
   // The catalogue kind of a parameter without an interned key (keyed ones are one table index),
   // or -1 when it is not in the catalogue.
@@ -43,6 +47,13 @@ private:
   toolpath::CommandSource& inner_;
   std::string file_;
   std::unordered_map<std::string, int> unkeyed_;  // names outside the key list, looked up once
+  // The last names looked up in unkeyed_, by a hash of their length and first bytes (`kind` -2:
+  // empty): a job repeats the same few names outside the key list command after command.
+  struct RecentName {
+    std::string name;
+    int kind = -2;
+  };
+  std::array<RecentName, 64> recent_unkeyed_;
   Warn warn_;
   std::uint32_t given_ = 0;   // the required parameters some command has carried (bits of Need)
   std::uint64_t warned_ = 0;  // (command, parameter) pairs already warned about

@@ -2,7 +2,10 @@
 // catalogue's parameters (ParameterCheck), at run time for the others (the binding), never `:0:0:`.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
+#include <vector>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -141,6 +144,76 @@ TEST(ParameterCheck, MotionsCarryWhatTheyNeed) {
     std::string warnings;
     EXPECT_EQ(read_error(c.trace, &warnings), c.error) << c.trace;
     EXPECT_EQ(warnings, c.warnings) << c.trace;
+  }
+}
+
+// Hands out prepared commands, each once.
+class Commands final : public toolpath::CommandSource {
+public:
+  std::vector<toolpath::Command> commands;
+  std::size_t at = 0;
+  bool next(toolpath::Command& out) override {
+    if (at == commands.size()) return false;
+    out = commands[at++];
+    return true;
+  }
+};
+
+// The per-key table of the check's fast path against the rule written out here: every catalogue
+// parameter (keyed or looked up by name, each twice, so that remembered names are used) with
+// values of every kind at the edges, on an @arc and on another command.
+TEST(ParameterCheck, FastPathAgreesWithTheRule) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const Value values[] = {
+      Value::make_integer(0), Value::make_integer(1), Value::make_integer(2), Value::make_integer(-1),
+      Value::make_integer(999999999), Value::make_integer(1000000000), Value::make_numeric(0.0),
+      Value::make_numeric(-0.0), Value::make_numeric(1.0), Value::make_numeric(0.5), Value::make_numeric(-3.5),
+      Value::make_numeric(std::numeric_limits<double>::denorm_min()), Value::make_numeric(-std::numeric_limits<double>::denorm_min()),
+      Value::make_numeric(999999999.0), Value::make_numeric(-999999999.0), Value::make_numeric(999999999.5),
+      Value::make_numeric(1e300), Value::make_numeric(std::numeric_limits<double>::max()), Value::make_numeric(inf),
+      Value::make_numeric(-inf), Value::make_numeric(std::nan("")), Value::make_logical(true), Value::make_logical(false),
+      Value::make_string("PART"), Value::make_enum("CW"),
+  };
+  std::vector<std::string> names;
+  for (const postproc::ParameterSpec& spec : postproc::parameter_table()) names.emplace_back(spec.name);
+  names.push_back("my_note");  // outside the catalogue
+  names.push_back("call_prms<<2>>");
+  for (const char* command : {"@arc", "@line"}) {
+    for (const std::string& name : names) {
+      const postproc::ParameterSpec* spec = postproc::find_parameter(name);
+      for (const Value& v : values) {
+        std::string expected;
+        if (spec) {
+          expected = postproc::kind_mismatch(spec->kind, v);
+          const bool number = v.kind == toolpath::ValueKind::Integer || v.kind == toolpath::ValueKind::Numeric;
+          const double x = v.as_number();
+          if (expected.empty() && number && toolpath::iequals(name, "feed") && !(x >= 0)) expected = "feed";
+          if (expected.empty() && number && toolpath::iequals(name, "radius") && !(x > 0) && std::string(command) == "@arc")
+            expected = "radius";
+        }
+        Commands source;
+        toolpath::Command c;
+        c.name = command;
+        c.parameters.emplace_back(name, v);
+        c.parameters.back().line = 7;
+        source.commands = {c, c};
+        postproc::ParameterCheck check(source, "job.trace");
+        for (int round = 0; round < 2; ++round) {
+          std::string error;
+          toolpath::Command out;
+          try {
+            check.next(out);
+          } catch (const toolpath::InputError& e) {
+            error = e.what();
+          }
+          EXPECT_EQ(error.empty(), expected.empty()) << command << " " << name << " " << int(v.kind) << " " << v.numeric
+                                                     << " " << v.integer << ": " << error;
+          if (!error.empty()) {
+            EXPECT_EQ(error.rfind("job.trace:7:0: parameter `" + name + "` of " + command + ": ", 0), 0u) << error;
+          }
+        }
+      }
+    }
   }
 }
 
