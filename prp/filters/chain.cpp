@@ -40,13 +40,14 @@ std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParamet
                                                             toolpath::CommandSource& input, WarningSink warn) {
   auto chain = std::make_unique<Chain>(input);
   chain->add<StructureCheck>(params, warn);
+  // Before procedure generation reorders the jobs: it follows the tool and the side in stream order.
+  if (CompensationCheck::needed(params)) chain->add<CompensationCheck>(params.numeric("min_delt_arc_rad"), warn);
   if (DrillExpansion::needed(params)) chain->add<DrillExpansion>(params, warn);
   if (!ModeCommands::wanted(params).empty()) chain->add<ModeCommands>(params, warn);
   if (params.logical("init_cpos")) chain->add<InitCpos>();
   // After the filters that add commands to inline jobs, so that those commands travel with their job.
   if (ProcedureGeneration::needed(params)) chain->add<ProcedureGeneration>(params);
   if (params.has("dflt_start") || params.has("dflt_end")) chain->add<DefaultPositions>(params);
-  if (CompensationCheck::needed(params)) chain->add<CompensationCheck>(params.numeric("min_delt_arc_rad"), warn);
   if (params.numeric("eps_line") > 0) chain->add<ShortLineFilter>(params.numeric("eps_line"));
   // Always there: even a machine that takes every arc is not sent one that is no arc (check_circle).
   chain->add<ArcFilter>(ArcSettings::from(params), warn);
