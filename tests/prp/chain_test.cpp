@@ -39,6 +39,21 @@ TEST(FilterChain, SolidCamFanucTracePassesThrough) {
                                                 "@absolute_mode before its first motion"}));
 }
 
+// The compensation check follows the tool and the side in stream order, before procedure
+// generation moves the jobs into bodies (gen_procs = Y in the shipped Fanuc PRP).
+TEST(FilterChain, CompensationIsCheckedBeforeJobsBecomeProcedures) {
+  auto params = prp::load_file("../machines/fanuc/fanuc.prp", prp::Units::Metric);
+  ASSERT_EQ(params.text("gen_procs"), "Y");
+  auto reader = toolpath::TraceReader::open("prp/data/tight-corners.trace");
+  std::vector<std::string> warnings;
+  auto chain = prp::build_filter_chain(params, *reader, [&](const toolpath::Command& c, const std::string& m) {
+    warnings.push_back(std::to_string(c.line) + ": " + m);
+  });
+  drain(*chain);
+  const std::string tight = ": arc radius 5 is below tool radius 5 + min_delt_arc_rad 0.01 on the compensated side (COMP_LEFT)";
+  EXPECT_EQ(warnings, (std::vector<std::string>{"58" + tight, "78" + tight, "98" + tight, "118" + tight}));
+}
+
 TEST(FilterChain, LinearisesArcsForAMachineWithoutThem) {
   auto params = prp::load_source("@pre_processor\narc_exist = N\nendp\n", "n.prp", prp::Units::Metric);
   ListSource source({command("@line", {{"xpos", num(10)}, {"ypos", num(0)}, {"zpos", num(0)}}),
