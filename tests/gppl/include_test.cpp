@@ -10,15 +10,6 @@ using namespace gppl_test;
 
 namespace {
 
-std::string first_error(const std::string& path) {
-  try {
-    gppl::compile_file(path, {});
-  } catch (const gppl::Errors& e) {
-    return e.all().front().what();
-  }
-  return "no error";
-}
-
 TEST(Include, ProceduresAndInitIncJoin) {
   auto program = gppl::compile_file("gppl/data/include/main.gpp", {});
   CapturedLines out;
@@ -31,15 +22,15 @@ TEST(Include, ProceduresAndInitIncJoin) {
 }
 
 TEST(Include, Errors) {
-  EXPECT_EQ(first_error("gppl/data/include/self.gpp"),
+  EXPECT_EQ(first_file_error("gppl/data/include/self.gpp"),
             "gppl/data/include/self.gpp:1:1: error 385: Unrecognized statement: 'self.gpp' includes itself "
             "(directly or through other files)");
-  EXPECT_EQ(first_error("gppl/data/include/ring_a.gpp"),
+  EXPECT_EQ(first_file_error("gppl/data/include/ring_a.gpp"),
             "gppl/data/include/ring_b.gpp:1:1: error 385: Unrecognized statement: 'ring_a.gpp' includes itself "
             "(directly or through other files)");
-  EXPECT_EQ(first_error("gppl/data/include/missing.gpp"),
+  EXPECT_EQ(first_file_error("gppl/data/include/missing.gpp"),
             "gppl/data/include/missing.gpp:4:1: error 399: Can't open file 'nothere.gpp'");
-  EXPECT_EQ(first_error("gppl/data/include/broken.gpp"),
+  EXPECT_EQ(first_file_error("gppl/data/include/broken.gpp"),
             "gppl/data/include/broken_sub.gpp:2:9: error 389: Invalid ASSIGNMENT statement: expected ')'");
 }
 
@@ -51,8 +42,8 @@ TEST(Include, NestingLimit) {
     if (i < 17) f << "inc \"f" << i + 1 << "\"\n";
     f << "@p" << i << "\nendp\n";
   }
-  EXPECT_EQ(first_error((dir / "f1.gpp").string()), "no error");  // f1 .. f17: 16 levels of inclusion
-  const std::string deep = first_error((dir / "f0.gpp").string());
+  EXPECT_EQ(first_file_error((dir / "f1.gpp").string()), "no error");  // f1 .. f17: 16 levels of inclusion
+  const std::string deep = first_file_error((dir / "f0.gpp").string());
   EXPECT_NE(deep.find("f16.gpp:1:1: error 385: Unrecognized statement: includes nest deeper than 16 levels"),
             std::string::npos)
       << deep;

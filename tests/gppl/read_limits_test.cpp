@@ -9,19 +9,12 @@
 #include <string>
 
 #include "gppl/gppl.hpp"
+#include "support.hpp"
 
 namespace fs = std::filesystem;
+using gppl_test::first_file_error;
 
 namespace {
-
-std::string first_error(const std::string& path) {
-  try {
-    gppl::compile_file(path, {});
-  } catch (const gppl::Errors& e) {
-    return e.all().front().what();
-  }
-  return "no error";
-}
 
 TEST(ReadLimits, OpenedIsNotCannotOpen) {
   const fs::path dir = fs::temp_directory_path() / ("gppl_read_limits_test_" + std::to_string(::getpid()));
@@ -51,7 +44,7 @@ TEST(ReadLimits, OpenedIsNotCannotOpen) {
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);
-    EXPECT_EQ(first_error(c.path), c.expected);
+    EXPECT_EQ(first_file_error(c.path), c.expected);
   }
   std::error_code ignored;
   fs::remove_all(dir, ignored);

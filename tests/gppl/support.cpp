@@ -49,6 +49,15 @@ std::string compile_error(const std::string& source, gppl::CompileOptions option
   return "no error";
 }
 
+std::string first_file_error(const std::string& path) {
+  try {
+    gppl::compile_file(path, {});
+  } catch (const gppl::Errors& e) {
+    return e.all().front().what();
+  }
+  return "no error";
+}
+
 std::string run_error(const std::string& source) {
   try {
     Post post(source);

@@ -36,6 +36,8 @@ struct Post {
 
 // "line:column: error N" of the first load-time error, or "no error".
 std::string compile_error(const std::string& source, gppl::CompileOptions options = {});
+// The whole message of the first error compiling the post file at `path`, or "no error".
+std::string first_file_error(const std::string& path);
 // "line:column: error N" of the run-time error of procedure @t (after @init_post), or "no error".
 std::string run_error(const std::string& source);
 
