@@ -106,28 +106,15 @@ bool ArcFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
   if (kind == CommandKind::arc || kind == CommandKind::arc_5x) {
     plan(out, kind, f);
     if (pieces_ > 0) {
-      give_start(out);  // the pieces take theirs from the original
       sets_.prepare(out, arc_, history_);
       history_.observe(out, kind);
       swap(original_, out);
       emit(out, kind);
       return true;
     }
-    follow(out, kind, f);
-    give_start(out);  // after follow: it may add parameters, which `f` points into
-    return true;
   }
   follow(out, kind, f);
   return true;
-}
-
-// SolidCAM sends an arc with its start point (`xstart`, `ystart`, `zstart`), from which real posts
-// work out the arc (a Sinumerik post recomputes the end from it and aborts on a mismatch). A trace
-// that does not carry them gets the start the filter worked out: the tool position.
-void ArcFilter::give_start(toolpath::Command& out) const {
-  if (!out.find("xstart")) out.set("xstart", toolpath::Value::make_numeric(start_.x()));
-  if (!out.find("ystart")) out.set("ystart", toolpath::Value::make_numeric(start_.y()));
-  if (!out.find(ParamKey::zstart)) out.set(ParamKey::zstart, toolpath::Value::make_numeric(start_.z()));
 }
 
 // Follows a stream command: the tool position (moves only, as ToolPosition::update), apos/bpos
@@ -217,7 +204,6 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Fields&
   start[a.normal] = zstart ? *zstart : position_.axis(a.normal).value_or(end[a.normal]);
   centre[a.normal] = start[a.normal];
   if (settings_.check_circles) check_circle(c, start, end, centre, a, f.number(kRadius));
-  start_ = start;
 
   bool tilted = false;  // in the machine's axes the arc lies in none of XY, YZ, ZX
   if (const toolpath::Value* m = f.find(kPlaneM)) tilted = !toolpath::geometry::parse_plane(m->text);
@@ -320,9 +306,12 @@ void ArcFilter::emit(toolpath::Command& out, CommandKind& kind) {
     set_number(out, ParamKey::start_angle, piece.start_angle());
     set_number(out, ParamKey::end_angle, piece.end_angle());
     set_number(out, ParamKey::arc_size, piece.sweep);
-    set_number(out, ParamKey::zstart, piece.start.z());  // each piece starts where the one before ended
-    out.set("xstart", toolpath::Value::make_numeric(piece.start.x()));
-    out.set("ystart", toolpath::Value::make_numeric(piece.start.y()));
+    // SolidCAM sends an arc with its start point, from which real posts work the arc out (a
+    // Sinumerik post recomputes the end and aborts on a mismatch): each piece starts where the
+    // one before ended.
+    if (out.find(ParamKey::zstart)) set_number(out, ParamKey::zstart, piece.start.z());
+    if (out.find("xstart")) set_number(out, "xstart", piece.start.x());
+    if (out.find("ystart")) set_number(out, "ystart", piece.start.y());
     sets_.write_piece(out, piece, i == 0, last);
   }
   if (five_axis_) {

@@ -57,7 +57,6 @@ public:
 private:
   struct Fields;  // what the filter reads of a command, found in one pass
   void plan(const toolpath::Command& arc, CommandKind kind, const Fields& f);
-  void give_start(toolpath::Command& arc) const;
   void check_circle(const toolpath::Command& arc, const Eigen::Vector3d& start, const Eigen::Vector3d& end,
                     const Eigen::Vector3d& centre, const toolpath::geometry::PlaneAxes& a,
                     std::optional<double> radius) const;
@@ -74,7 +73,6 @@ private:
   bool five_axis_ = false;      // the arc being replaced is an @arc_5x
   std::optional<double> rotary_from_[2], rotary_to_[2];  // apos, bpos at its start and end
   toolpath::Command original_;  // the arc being replaced
-  Eigen::Vector3d start_;       // where the arc planned last starts
   toolpath::geometry::Arc arc_;
   std::vector<double> cuts_;    // piece boundaries as offsets from the start, 0 .. sweep
   int chords_ = 0;              // > 0: linearising into this many chords

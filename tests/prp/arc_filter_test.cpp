@@ -150,7 +150,7 @@ TEST(ArcFilter, FullCircleInHalves) {
 TEST(ArcFilter, PassesUnchangedAndIsIdempotent) {
   ArcSettings s;  // engine defaults: everything passes
   auto once = run(circle_job(), s);
-  EXPECT_EQ(without_start(once), circle_job());
+  EXPECT_EQ(once, circle_job());
   s.quadrants = true;
   auto split = run(circle_job(), s);
   EXPECT_EQ(run(split, s), split);
@@ -223,28 +223,25 @@ TEST(ArcFilter, ArcsThatAreNoArcsAreErrors) {
   EXPECT_EQ(ArcSettings::from(prp::defaults(prp::Units::Inch)).circle_tolerance, 0.0002);
 }
 
-// Each arc leaves with its start point (SolidCAM sends xstart/ystart/zstart; real posts compute the
-// arc from them): the tool position when the stream gives none, the previous piece's end for the
-// pieces of a split arc.
-TEST(ArcFilter, ArcsCarryTheirStartPoint) {
+// SolidCAM sends an arc with its start point (xstart, ystart, zstart; real posts compute the arc
+// from it): the pieces of a split arc each start where the one before ended. An arc that passes
+// keeps what it had.
+TEST(ArcFilter, PiecesCarryTheirOwnStartPoint) {
+  auto job = circle_job();
+  job[1].set("xstart", num(26));
+  job[1].set("ystart", num(-4));
+  job[1].set("zstart", num(-6));
+  EXPECT_EQ(run(job, ArcSettings{}), job);
   ArcSettings s;
-  auto whole = run(circle_job(), s);
-  ASSERT_EQ(whole.size(), 2u);
-  EXPECT_EQ(get(whole[1], "xstart"), 26);
-  EXPECT_EQ(get(whole[1], "ystart"), -4);
-  EXPECT_EQ(get(whole[1], "zstart"), -6);
   s.quadrants = true;
-  auto pieces = run(circle_job(), s);
+  auto pieces = run(job, s);
   ASSERT_EQ(pieces.size(), 5u);
-  for (std::size_t i = 2; i < pieces.size(); ++i) {
+  for (std::size_t i = 1; i < pieces.size(); ++i) {
     EXPECT_NEAR(get(pieces[i], "xstart"), get(pieces[i - 1], "xpos"), 1e-12) << i;
     EXPECT_NEAR(get(pieces[i], "ystart"), get(pieces[i - 1], "ypos"), 1e-12) << i;
+    EXPECT_NEAR(get(pieces[i], "zstart"), get(pieces[i - 1], "zpos"), 1e-12) << i;
   }
-  auto given = circle_job();  // a start point the stream gives stays
-  given[1].set("xstart", num(26));
-  given[1].set("ystart", num(-4));
-  given[1].set("zstart", num(-6));
-  EXPECT_EQ(run(given, ArcSettings{}), given);
+  EXPECT_EQ(run(circle_job(), s)[1].find("xstart"), nullptr);  // none given, none made
 }
 
 // --- properties over random arcs -------------------------------------------------------------

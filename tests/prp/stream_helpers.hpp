@@ -58,14 +58,4 @@ inline std::vector<toolpath::Command> run_arc_filter(std::vector<toolpath::Comma
   return drain(filter);
 }
 
-// `out` without the start point the ArcFilter gives each arc that has none (xstart, ystart,
-// zstart): what "the arc passes unchanged" compares, for inputs that carry no start point.
-inline std::vector<toolpath::Command> without_start(std::vector<toolpath::Command> out) {
-  for (auto& c : out)
-    std::erase_if(c.parameters, [](const toolpath::Parameter& p) {
-      return p.name == "xstart" || p.name == "ystart" || p.name == "zstart";
-    });
-  return out;
-}
-
 }  // namespace prp_test
