@@ -12,6 +12,7 @@
 #include "toolpath/bounded_read.hpp"
 #include "toolpath/error.hpp"
 #include "toolpath/trace_reader.hpp"
+#include "tests/support/read_error.hpp"
 
 namespace fs = std::filesystem;
 
@@ -133,14 +134,8 @@ TEST(BoundedRead, TraceMessagesQuoteAShortPrefix) {
   const auto error_of = [](const std::string& text) -> std::string {
     std::istringstream in(text);
     toolpath::TraceReader reader(in, "m.trace");
-    toolpath::Command c;
-    try {
-      while (reader.next(c)) {
-      }
-    } catch (const toolpath::InputError& e) {
-      return e.what();
-    }
-    return "no error";
+    const std::string error = test_support::read_error(reader);
+    return error.empty() ? "no error" : error;
   };
   const std::string name(2 << 20, 'n'), digits(2 << 20, '9');
   EXPECT_EQ(error_of("@start_of_file\n" + name + " x\n"),

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "toolpath/trace_reader.hpp"
+#include "tests/support/read_error.hpp"
 
 namespace {
 
@@ -22,14 +23,7 @@ std::string slurp(const char* path) {
 std::string try_read(const std::string& text) {
   std::istringstream in(text);
   toolpath::TraceReader reader(in, "m.trace");
-  toolpath::Command c;
-  try {
-    while (reader.next(c)) {
-    }
-  } catch (const toolpath::InputError& e) {
-    return e.what();
-  }
-  return {};
+  return test_support::read_error(reader);
 }
 
 TEST(TraceReaderRobustness, MutationsReadOrFailWithAPosition) {

@@ -10,22 +10,11 @@
 
 #include "machines/2xaxiscnc/reader.hpp"
 #include "toolpath/error.hpp"
+#include "tests/support/read_error.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// Reads everything: "" or the error text.
-std::string read_error(twoaxis::TwoAxisReader& reader) {
-  toolpath::Command c;
-  try {
-    while (reader.next(c)) {
-    }
-  } catch (const toolpath::InputError& e) {
-    return e.what();
-  }
-  return {};
-}
 
 TEST(ReaderLimits, LinesLongerThan16MiBAreAnError) {
   const fs::path dir = fs::temp_directory_path() / ("twoaxis_reader_limits_test_" + std::to_string(::getpid()));
@@ -52,7 +41,7 @@ TEST(ReaderLimits, LinesLongerThan16MiBAreAnError) {
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);
-    EXPECT_EQ(read_error(*c.reader), c.expected);
+    EXPECT_EQ(test_support::read_error(*c.reader), c.expected);
   }
   std::error_code ignored;
   fs::remove_all(dir, ignored);
@@ -78,7 +67,7 @@ TEST(ReaderLimits, MessagesQuoteAShortPrefix) {
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);
     auto reader = twoaxis::TwoAxisReader::from_string(c.program, "p.nc");
-    EXPECT_EQ(read_error(*reader), "");
+    EXPECT_EQ(test_support::read_error(*reader), "");
     ASSERT_EQ(reader->diagnostics().size(), 1u);
     EXPECT_EQ(reader->diagnostics().front().message, c.message);
   }

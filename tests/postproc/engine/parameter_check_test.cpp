@@ -14,6 +14,7 @@
 #include "postproc/engine/engine.hpp"
 #include "postproc/engine/parameter_check.hpp"
 #include "toolpath/trace_reader.hpp"
+#include "tests/support/read_error.hpp"
 
 namespace {
 
@@ -63,14 +64,7 @@ std::string read_error(const std::string& trace, std::string* warnings = nullptr
   postproc::ParameterCheck check(reader, "job.trace", [&](const toolpath::SourcePosition& at, const std::string& m) {
     if (warnings) *warnings += at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " + m + "\n";
   });
-  toolpath::Command c;
-  try {
-    while (check.next(c)) {
-    }
-  } catch (const toolpath::InputError& e) {
-    return e.what();
-  }
-  return {};
+  return test_support::read_error(check);
 }
 
 TEST(ParameterCheck, ReadErrorsNameTheValue) {
