@@ -290,9 +290,8 @@ void ParameterCheck::check_slow(const toolpath::Command& out, const toolpath::Pa
 }
 
 void ParameterCheck::report_missing(const toolpath::Command& c, int r, std::uint32_t present) {
-  const std::uint32_t lacking = kRequired[r].needs & ~present;
-  if (!lacking) return;
   const std::uint32_t need = kRequired[r].needs;
+  const std::uint32_t lacking = need & ~present;  // not 0: next() calls only then
   if (const std::uint32_t never = lacking & ~given_) {
     const int bit = std::countr_zero(never);
     throw toolpath::InputError({file_, c.line, 1},
