@@ -123,6 +123,9 @@ private:
     }
     count(f_.int_digits);
     if (eat('/') && !count(f_.min_int_digits)) format_error(408, "without any digit after '/'", s_);
+    // m never exceeds M: SolidCAM prints '1/2.0(p)' as G0 and M3, not G00 and M03, while
+    // '8/5.7/4' still gives 00012.3450 (docs/gppl-formats.md, "M/m").
+    if (f_.int_digits > 0 && f_.min_int_digits > f_.int_digits) f_.min_int_digits = f_.int_digits;
   }
 
   void fraction_part() {

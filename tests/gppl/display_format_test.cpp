@@ -151,6 +151,19 @@ const Vector algorithm_vectors[] = {
 INSTANTIATE_TEST_SUITE_P(Algorithm, FormatVectors, testing::ValuesIn(algorithm_vectors),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// What SolidCAM wrote with these formats (docs/gppl-formats.md, "M/m: never more than M"): the
+// Siemens posts' gcode_f/mcode_f '1/2.0(p)' print G0, M3, G17, G710.
+const Vector solidcam_vectors[] = {
+    {"m_above_M_zero", integer(0), "1/2.0(p)", "0"},
+    {"m_above_M_one_digit", integer(3), "1/2.0(p)", "3"},
+    {"m_above_M_two_digits", integer(17), "1/2.0(p)", "17"},
+    {"m_above_M_three_digits", integer(710), "1/2.0(p)", "710"},
+    {"m_above_M_clipped_to_M", integer(5), "2/3.0(p)", "05"},
+    {"m_below_M_zero_fills", num(1.5), "4/3.2", "001.5"},
+};
+INSTANTIATE_TEST_SUITE_P(SolidCAM, FormatVectors, testing::ValuesIn(solidcam_vectors),
+                         [](const auto& info) { return std::string(info.param.name); });
+
 TEST(DisplayFormat, LargestPrintableValue) {
   gppl::DisplayFormat f = gppl::parse_display_format("5.0(p)");
   EXPECT_EQ(gppl::format_value(f, num(1e100)), "1" + std::string(100, '0'));
