@@ -169,12 +169,14 @@ std::tm now() {
 }
 
 // The month in capitals: a SolidCAM 2024 trace shows JUL where the manual prints 12-Apr-1994
-// (posts cut the month out with substr and print it as it is); real output wins.
+// (posts cut the month out with substr and print it as it is); real output wins. The day is
+// padded with a blank, not a zero: SolidCAM's Siemens posts print ` 9-JUL-2026` rearranged by
+// substr as `JUL- 9-2026` (docs/gppl-formats.md).
 Value f_date(const FunctionSignature&, Args) {
   static constexpr const char* months[] = {"JAN", "FEB", "MAR", "APR", "MAY", "JUN",
                                            "JUL", "AUG", "SEP", "OCT", "NOV", "DEC"};
   std::tm tm = now();
-  return Value::of_string(fmt::format("{:02}-{}-{:04}", tm.tm_mday, months[tm.tm_mon % 12], tm.tm_year + 1900));
+  return Value::of_string(fmt::format("{:2}-{}-{:04}", tm.tm_mday, months[tm.tm_mon % 12], tm.tm_year + 1900));
 }
 
 Value f_time(const FunctionSignature&, Args) {
