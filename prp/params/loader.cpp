@@ -247,8 +247,8 @@ void Loader::check_ranges() {
     error(p->where.column, "arc_max_deviation must be greater than 0", p->where.line);
   if (const Parameter* p = get("arc_max_angle"); p) {
     for (double a : {p->metric[0], p->inch[0]})
-      if (!(a > 0 && a <= 180)) {
-        error(p->where.column, "arc_max_angle must be in (0, 180] degrees", p->where.line);
+      if (!(a > 0 && a <= 360)) {  // 360: whole circles allowed (SolidCAM's VMIDs write MaxArcAngle="360")
+        error(p->where.column, "arc_max_angle must be in (0, 360] degrees", p->where.line);
         break;
       }
   }

@@ -27,7 +27,12 @@ std::optional<double> to_number(std::string_view t) {
 }
 
 std::optional<std::int64_t> to_integer(std::string_view t) {
-  if (!grammar::matches<grammar::integer>(t)) return std::nullopt;
+  if (!grammar::matches<grammar::integer>(t)) {
+    // SolidCAM writes whole numbers of integer parameters with decimals too: DefaultValue="3.000000".
+    auto d = to_number(t);
+    if (!d || *d != std::trunc(*d) || std::abs(*d) > 999999999) return std::nullopt;
+    return static_cast<std::int64_t>(*d);
+  }
   if (t[0] == '+') t.remove_prefix(1);
   std::int64_t v = 0;
   auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), v);

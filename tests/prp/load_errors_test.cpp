@@ -89,12 +89,12 @@ const ErrorCase kErrorCases[] = {
      "t.prp:2:17: arc_max_chord must be greater than 0"},
     {"DeviationNotPositive", "@pre_processor\narc_max_deviation = 0.01, 0\nendp\n",
      "t.prp:2:21: arc_max_deviation must be greater than 0"},
-    {"MaxAngle", "@pre_processor\narc_max_angle = 190\nendp\n", "t.prp:2:17: arc_max_angle must be in (0, 180] degrees"},
+    {"MaxAngle", "@pre_processor\narc_max_angle = 361\nendp\n", "t.prp:2:17: arc_max_angle must be in (0, 360] degrees"},
     {"NegativeEpsilon", "@pre_processor\neps_line = -0.1\nendp\n", "t.prp:2:12: eps_line must not be negative"},
     {"AllErrorsAtOnce", "@pre_processor\narc_exist = maybe\ngen_procs = X\narc_max_angle = 0\nendp\n",
      "t.prp:2:13: expected Y or N, found `maybe`\n"
      "t.prp:3:13: expected Y, N, C or D, found `X`\n"
-     "t.prp:4:17: arc_max_angle must be in (0, 180] degrees"},
+     "t.prp:4:17: arc_max_angle must be in (0, 360] degrees"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Classes, LoadErrors, testing::ValuesIn(kErrorCases),

@@ -136,6 +136,24 @@ TEST(Vmid, UserParametersOfEveryValueType) {
   EXPECT_EQ(p.records("job_opt_type")[0]->type, prp::VarType::Logical);
 }
 
+// What SolidCAM itself writes into VMIDs (the PoyaKar and Siemens 828D machines of catinrage/achar):
+// whole circles allowed, and integer parameters whose whole values carry decimals.
+TEST(Vmid, AsSolidCAMWritesThem) {
+  auto p = prp::load_source(
+      "<Machine><ArcExecutions><ArcExecution SupportArcs=\"1\" MaxArcAngle=\"360\"/></ArcExecutions>\n"
+      "<UserDefParams><MachineParams><Param GppName=\"iM8_NumberOfIterations\" ValueType=\"4\" Value=\"\" "
+      "DefaultValue=\"3.000000\" IsStateActive=\"1\"/></MachineParams></UserDefParams></Machine>",
+      "s.vmid", Units::Metric);
+  EXPECT_DOUBLE_EQ(p.numeric("arc_max_angle"), 360);
+  const prp::ExternalVariable* v = external(p, "iM8_NumberOfIterations");
+  ASSERT_NE(v, nullptr);
+  ASSERT_TRUE(v->initial.has_value());
+  EXPECT_TRUE(*v->initial == toolpath::Value::make_integer(3));
+  EXPECT_EQ(load_error("<Machine><UserDefParams><MachineParams>\n<Param GppName=\"iX\" ValueType=\"4\" "
+                       "Value=\"3.500000\"/>\n</MachineParams></UserDefParams></Machine>"),
+            "m.vmid:2:42: Value=\"3.500000\": expected an integer (ValueType 4)");
+}
+
 TEST(Vmid, DrillCyclesBecomeDrillTypeRecords) {
   auto p = prp::load_file("prp/data/mill-4x.vmid", Units::Metric);
   std::vector<std::string> got;
