@@ -55,6 +55,11 @@ Enumerations::Enumerations(const std::vector<std::string>& drill_type_names) {
                  "constant_z", "pencil"},
                 1);
   declare_group({"INTEGER", "NUMERIC", "STRING"}, 1);
+  // Switch words of a real trace: SolidCAM's posts test `flood_coolant eq 1` for `on` and
+  // `eq 0 or eq 2` for the rest (docs/engine.md, "Enumeration words"). Codes only: names as
+  // common as `on` or `no` are not made constants a post could collide with.
+  declare_group({"off", "on", "no_action"}, 0, false);
+  declare_group({"no", "yes"}, 0, false);
   // Drill cycles: the PRP's own names first, then the internal types (a PRP normally names its cycles
   // after them, as the FANUC one does: `drill_type = Peck Peck Y Delay`).
   std::int64_t drill_code = 1;
@@ -70,11 +75,12 @@ Enumerations::Enumerations(const std::vector<std::string>& drill_type_names) {
     }
 }
 
-void Enumerations::declare_group(std::initializer_list<std::string_view> words, std::int64_t first_code) {
+void Enumerations::declare_group(std::initializer_list<std::string_view> words, std::int64_t first_code,
+                                 bool constants) {
   std::int64_t code = first_code;
   for (std::string_view w : words) {
     // A word listed by two groups keeps its first code (`XY` is the same in every plane group).
-    if (by_lower_name_.emplace(lower(w), code).second) constants_.push_back({std::string(w), code});
+    if (by_lower_name_.emplace(lower(w), code).second && constants) constants_.push_back({std::string(w), code});
     ++code;
   }
 }

@@ -29,7 +29,7 @@ public:
   const std::vector<Constant>& constants() const { return constants_; }
 
 private:
-  void declare_group(std::initializer_list<std::string_view> words, std::int64_t first_code);
+  void declare_group(std::initializer_list<std::string_view> words, std::int64_t first_code, bool constants = true);
   std::vector<Constant> constants_;
   // Keyed by the lower-case word; hashed and compared without case, so that code() looks a
   // stream's word up as it is, without building a lower-case copy (it runs for every command).

@@ -72,6 +72,13 @@ TEST(Enumerations, CodesAreStableAndCaseInsensitive) {
   EXPECT_EQ(e.code("g84_2"), 2);
   EXPECT_EQ(e.code("peck"), 3);
   EXPECT_EQ(e.code("F_Drill"), 4) << "internal cycle types follow the PRP's own names";
+  // Real SolidCAM traces: `flood_coolant:on` is 1 (posts test `eq 1`), `off` 0, `no_action` 2;
+  // `msr_len:no` 0, `MCO_New_Line:yes` 1. Codes only, not constants a post could collide with.
+  EXPECT_EQ(e.code("on"), 1);
+  EXPECT_EQ(e.code("OFF"), 0);
+  EXPECT_EQ(e.code("no_action"), 2);
+  EXPECT_EQ(e.code("no"), 0);
+  EXPECT_EQ(e.code("yes"), 1);
   auto unknown = e.code("salamat");
   EXPECT_GE(unknown, 1000);
   EXPECT_EQ(e.code("SALAMAT"), unknown);
@@ -79,6 +86,7 @@ TEST(Enumerations, CodesAreStableAndCaseInsensitive) {
   const auto& all = e.constants();
   EXPECT_TRUE(std::any_of(all.begin(), all.end(), [](const auto& c) { return c.name == "G84_2" && c.code == 2; }));
   EXPECT_EQ(std::count_if(all.begin(), all.end(), [](const auto& c) { return toolpath::iequals(c.name, "XY"); }), 1);
+  EXPECT_TRUE(std::none_of(all.begin(), all.end(), [](const auto& c) { return toolpath::iequals(c.name, "on"); }));
 }
 
 }  // namespace
