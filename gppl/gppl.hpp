@@ -103,6 +103,10 @@ const std::vector<std::string>& warnings(const Program& program);
 struct LineOrigin {
   std::string_view procedure;  // "@line"
   int source_line = 0;
+  // The line was started by `nl` or `nb`, which write the line break before the line (the first
+  // line of the output has none when text came before any nl/nb). SolidCAM files therefore begin
+  // with an empty line and end without a final break (docs/engine.md, "Line breaks").
+  bool after_break = true;
 };
 
 using ProcedureId = std::uint32_t;

@@ -229,7 +229,7 @@ struct Interpreter::State {
     else append_opening(text);
   }
   void append_opening(std::string_view text);
-  void open_line();
+  void open_line(bool after_break = false);  // nl and nb pass true: they break before the line
   void flush();
   void new_block(SourcePos pos);
   void new_line();

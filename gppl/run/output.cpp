@@ -26,10 +26,11 @@ constexpr std::string_view kNumericDefault = "5.3";
 
 }  // namespace
 
-void Interpreter::State::open_line() {
+void Interpreter::State::open_line(bool after_break) {
   line.clear();
   line_open = true;
   separator_pending = false;
+  origin.after_break = after_break;
   if (!frames.empty()) origin.procedure = program.procedures[frames.back().procedure].name;
   else origin.procedure = {};
   origin.source_line = current ? int(current->pos.line) : 0;
@@ -65,7 +66,7 @@ void Interpreter::State::new_block(SourcePos pos) {
     return;
   }
   flush();
-  open_line();
+  open_line(true);
   if (!globals[program.slots.blknum_exist].value.logical || !globals[program.slots.blknum_gen].value.logical) return;
   Cell& number = globals[program.slots.blknum];
   const std::int64_t n = number.value.integer;
@@ -96,7 +97,7 @@ void Interpreter::State::new_block(SourcePos pos) {
 
 void Interpreter::State::new_line() {
   flush();
-  open_line();
+  open_line(true);
   Cell& skip = globals[program.slots.skipline];
   if (!skip.value.logical) assign(skip, Value::of_logical(true), ChangeOverride::Compute, nullptr);
 }

@@ -57,6 +57,9 @@ struct LineEvent {
   std::string_view text;
   bool directive = false;
   bool main_file = false;  // `file` is the main program (not a file a directive opened)
+  // The empty first line of a file that the break before its first block makes (SolidCAM writes
+  // breaks before blocks): a line of the file, but not one the post generated (no `>` line in a trace).
+  bool leading_break = false;
   LineOrigin origin;
 };
 

@@ -11,7 +11,8 @@ void EngineSink::write_line(std::string_view line, const gppl::LineOrigin& origi
   while (first < line.size() && (line[first] == ' ' || line[first] == '\t')) ++first;
   const bool maybe_directive = first < line.size() && line[first] == '!';
   if (!maybe_directive && !observer_) {  // the usual line: straight to the file
-    files_.write_line(line);
+    lines += files_.break_starts_file(origin.after_break);
+    files_.write_line(line, origin.after_break);
     ++lines;
     return;
   }
@@ -25,29 +26,38 @@ void EngineSink::write_observed(std::string_view line, const gppl::LineOrigin& o
     // open line and open the next one), unless this command already flushed one.
     bool own = wrote_in_command_;
     file_name_ = files_.current_name();
-    LineEvent e{file_name_, line, directive.has_value(), files_.current_is_main(),
+    LineEvent e{file_name_, line, directive.has_value(), files_.current_is_main(), false,
                 {own ? command_index : opener_index_, own ? command_name : std::string_view(opener_name_),
                  origin.procedure, origin.source_line}};
+    if (files_.break_starts_file(origin.after_break)) {
+      LineEvent empty = e;
+      empty.text = {};
+      empty.directive = false;
+      empty.leading_break = true;
+      observer_->on_line(empty);
+    }
     observer_->on_line(e);
     opener_index_ = command_index;
     opener_name_ = command_name;
     wrote_in_command_ = true;
   }
   if (directive) {
+    lines += files_.break_starts_file(origin.after_break);
     if (observer_ && directive->verb == Directive::Verb::Copy) {
       // The copied text becomes lines of the current file, attributed to the command that copies.
-      LineEvent copied{file_name_, {}, false, files_.current_is_main(),
+      LineEvent copied{file_name_, {}, false, files_.current_is_main(), false,
                        {command_index, command_name, origin.procedure, origin.source_line}};
       files_.execute(*directive, [&](std::string_view text) {
         copied.text = text;
         observer_->on_line(copied);
         ++lines;
-      });
+      }, origin.after_break);
     } else {
-      files_.execute(*directive);
+      files_.execute(*directive, {}, origin.after_break);
     }
   } else {
-    files_.write_line(line);
+    lines += files_.break_starts_file(origin.after_break);
+    files_.write_line(line, origin.after_break);
     ++lines;
   }
 }

@@ -117,19 +117,22 @@ void OutputFiles::switch_to(std::size_t index) {
   open_handle(entries_[current_], "ab");
 }
 
-void OutputFiles::write_line(std::string_view line) {
+void OutputFiles::write_line(std::string_view line, bool after_break) {
+  if (after_break && !break_taken_) append(line_end_ == LineEnd::CRLF ? std::string_view("\r\n") : std::string_view("\n"));
+  break_taken_ = false;
+  if (line.empty()) return;
   if (unwritten_slots_ > 0 && line.find('\x02') != std::string_view::npos) line = place_slots(line, slot_line_);
-  const std::size_t n = line.size() + (line_end_ == LineEnd::CRLF ? 2 : 1);
+  append(line);
+}
+
+void OutputFiles::append(std::string_view bytes) {
+  const std::size_t n = bytes.size();
   entries_[current_].size += n;
   if (buffered_ + n > buffer_.size()) {
     drain();
     if (n > buffer_.size()) buffer_.resize(n);
   }
-  char* out = buffer_.data() + buffered_;
-  if (!line.empty()) std::memcpy(out, line.data(), line.size());
-  out += line.size();
-  if (line_end_ == LineEnd::CRLF) *out++ = '\r';
-  *out = '\n';
+  std::memcpy(buffer_.data() + buffered_, bytes.data(), n);
   buffered_ += n;
 }
 
@@ -140,7 +143,13 @@ void OutputFiles::drain() {
   if (!e.file || fwrite_unlocked(buffer_.data(), 1, n, e.file) != n) io_failure("write", e.temp_path);
 }
 
-void OutputFiles::execute(const Directive& d, const LineCallback& copied_line) {
+void OutputFiles::execute(const Directive& d, const LineCallback& copied_line, bool after_break) {
+  write_line({}, after_break);
+  run(d, copied_line);
+  break_taken_ = true;
+}
+
+void OutputFiles::run(const Directive& d, const LineCallback& copied_line) {
   std::size_t index = find(d.name);
   switch (d.verb) {
     case Directive::Verb::Open:

@@ -33,13 +33,21 @@ public:
   void set_main_path(std::filesystem::path path);
   const std::filesystem::path& main_path() const { return entries_.front().final_path; }
 
-  // Appends one line and its line end to the current file.
-  void write_line(std::string_view line);
-  // Executes a directive. Throws std::runtime_error when it cannot (a file to copy that does not exist).
-  // `copied_line`, when given, receives each line a `copy` inserted (without its line end), so that
-  // observers see the copied text as lines of the current file.
+  // Appends one line to the current file. SolidCAM writes the line break before a block, not after
+  // it (`nl` and `nb` start a line): with `after_break` the break goes first, unless the directive
+  // just executed took it (the break that ends a `!! ... !!` line goes with it). So a file begins
+  // with an empty line and ends without a final break, as SolidCAM's do (docs/engine.md, "Line breaks").
+  void write_line(std::string_view line, bool after_break = true);
+  // True when write_line(…, after_break) would begin the current file with an empty line.
+  bool break_starts_file(bool after_break) const {
+    return after_break && !break_taken_ && entries_[current_].size == 0;
+  }
+  // Executes a directive line. The break before it (`after_break`, as for a line) stays in the file
+  // current before it; the break after it goes with it. Throws std::runtime_error when it cannot (a
+  // file to copy that does not exist). `copied_line`, when given, receives each line a `copy`
+  // inserted (without its line end), so that observers see the copied text as lines of the current file.
   using LineCallback = std::function<void(std::string_view)>;
-  void execute(const Directive& directive, const LineCallback& copied_line = {});
+  void execute(const Directive& directive, const LineCallback& copied_line = {}, bool after_break = true);
 
   // The current file's name: as the directive wrote it, or the main file's name.
   std::string current_name() const;
@@ -85,6 +93,8 @@ private:
   void open_handle(Entry& e, const char* mode);
   void close_handle(Entry& e);
   void switch_to(std::size_t index);
+  void run(const Directive& directive, const LineCallback& copied_line);
+  void append(std::string_view bytes);  // to the current file, through the buffer
   void drain();  // the buffered lines into the current file's stream
   void copy_into_current(std::string_view name, const LineCallback& copied_line);
   std::string display_name(const Entry& e) const;
@@ -109,6 +119,7 @@ private:
   // cost more than the rest of the hand-off). Drained before anything else touches a stream.
   std::vector<char> buffer_;
   std::size_t buffered_ = 0;
+  bool break_taken_ = false;  // a directive took the break before the next line
 };
 
 }  // namespace postproc

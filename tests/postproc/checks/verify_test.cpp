@@ -155,7 +155,7 @@ TEST(VerifyCli, PostThatTurnsArcsTheWrongWayIsCaughtAtTheFirstArc) {
   EXPECT_EQ(r.out,
             "../docs/examples/sample-job.trace: divergence at motion event 9: arc turns the other way\n"
             "  toolpath: command #13 @arc\n"
-            "  NC:       SAMPLE.NC:18: G2 X40. Y5. I0. J5.\n"
+            "  NC:       SAMPLE.NC:19: G2 X40. Y5. I0. J5.\n"
             "  expected arc CCW XY to X40.0000 Y5.0000 Z-2.0000 centre X35.0000 Y5.0000 Z-2.0000 R5.0000 sweep 90.0000 F400\n"
             "  actual   arc CW XY to X40.0000 Y5.0000 Z-2.0000 centre X35.0000 Y5.0000 Z-2.0000 R5.0000 sweep 270.0000 F400\n");
 }

@@ -80,7 +80,7 @@ TEST_F(Names, JobNamesAreDefined) {
   EXPECT_EQ(checked.code, 0) << checked.out;
   auto ran = run_cli({"run", "-q", "--post", post, job});
   EXPECT_EQ(ran.code, 0) << ran.err;
-  EXPECT_EQ(ran.out, "clamp 3\n");
+  EXPECT_EQ(ran.out, "\nclamp 3");
 }
 
 // The PRP's user parameters (typed declarations) are defined for check and run alike.
@@ -92,7 +92,7 @@ TEST_F(Names, MachineUserParametersAreDefined) {
   EXPECT_EQ(checked.code, 0) << checked.out;
   auto ran = run_cli({"run", "-q", "--post", post, "--prp", prp, job});
   EXPECT_EQ(ran.code, 0) << ran.err;
-  EXPECT_EQ(ran.out, "delay 2.5\n");
+  EXPECT_EQ(ran.out, "\ndelay 2.5");
 }
 
 // The run fills what it knows; a value in the trace wins.
@@ -103,7 +103,7 @@ TEST_F(Names, RunFillsWhatItKnows) {
   const std::string job = write("part7.trace", kJob + "@line\npart_name : 'FROM-TRACE'\n");
   auto ran = run_cli({"run", "-q", "--post", post, job});
   EXPECT_EQ(ran.code, 0) << ran.err;
-  EXPECT_EQ(ran.out, "part7 fill \npart7\nFROM-TRACE\n");
+  EXPECT_EQ(ran.out, "\npart7 fill \npart7\nFROM-TRACE");
 }
 
 // An inferred type gives way to the job's value: `stock_type` is guessed numeric, the trace sends text.
@@ -113,7 +113,7 @@ TEST_F(Names, InferredTypesFollowTheJob) {
   EXPECT_EQ(run_cli({"check", "-q", post}).code, 0);
   auto ran = run_cli({"run", "-q", "--post", post, job});
   EXPECT_EQ(ran.code, 0) << ran.err;
-  EXPECT_EQ(ran.out, "box\n");
+  EXPECT_EQ(ran.out, "\nbox");
 }
 
 // Tool-type words of the trace compare equal to the system constants of the same name.
@@ -126,7 +126,7 @@ TEST_F(Names, ToolTypeWordsAreConstants) {
   EXPECT_EQ(run_cli({"check", "-q", post}).code, 0);
   auto ran = run_cli({"run", "-q", "--post", post, job});
   EXPECT_EQ(ran.code, 0) << ran.err;
-  EXPECT_EQ(ran.out, "face\nother\n");
+  EXPECT_EQ(ran.out, "\nface\nother");
 }
 
 // Array system variables are filled element by element from the trace, in block and inline form.
@@ -139,7 +139,7 @@ TEST_F(Names, ArraysFillFromTheTrace) {
                                 "(1)@wc_chng_condition==> chng_cond_num:1 chng_cond<<1,1>>:'power' chng_cond<<3,1>>:'12'\n");
   auto ran = run_cli({"run", "-q", "--post", post, job});
   EXPECT_EQ(ran.code, 0) << ran.err;
-  EXPECT_EQ(ran.out, "P5. 7.\npower=12\n");
+  EXPECT_EQ(ran.out, "\nP5. 7.\npower=12");
   const std::string bad = write("bad.trace", "@call_prms\ncall_prms<<101>> : 5.\n");
   ran = run_cli({"run", "-q", "--post", post, bad});
   EXPECT_EQ(ran.code, 1);

@@ -65,10 +65,10 @@ TEST_F(EngineTest, ParametersChangeFlagsAndCommandNames) {
       "@tmatrix\n"
       "@line\nxpos : 5\nypos : 4\n";
   EXPECT_EQ(post(gpp, trace),
-            "@start_of_file @line @line X1. Y2.\n"
+            "\n@start_of_file @line @line X1. Y2.\n"
             "@line @line @line Y3.\n"
             "@line @line @tmatrix X1.\n"
-            "@tmatrix @line  X5.\n");
+            "@tmatrix @line  X5.");
 }
 
 // A parameter reaches the variable of its name whatever its spelling and position: catalogue names
@@ -85,10 +85,10 @@ TEST_F(EngineTest, ParametersBindByNameWhateverTheirSpellingAndOrder) {
       "@line\nextra_a : 11\nside : comp_left\nxpos : 5\nextra_b : 12\nypos : 6\n"
       "@line\nxpos : 5\nypos : 6\nEXTRA_A : 13\nextra_b : 14\nside : COMP_RIGHT\n";
   EXPECT_EQ(post(gpp, trace),
-            "1. 2. 7 8 L\n"
+            "\n1. 2. 7 8 L\n"
             "4. 3. 10 9 R\n"
             "5. 6. 11 12 L\n"
-            "5. 6. 13 14 R\n");
+            "5. 6. 13 14 R");
 }
 
 // The PRP half follows the job's `inch_system`, read from @start_of_file before the filters run;
@@ -106,8 +106,8 @@ TEST_F(EngineTest, PrpHalfFollowsTheJobsUnitSystem) {
   auto job = [](const char* inch_system) {
     return std::string("@start_of_file\n") + inch_system + "@start_program\n@end_program\n";
   };
-  const std::string metric = "S X0. Y200. Z100.\nE X10. Y20. Z30.\n";
-  const std::string inch = "S X0. Y7.874 Z3.9371\nE X0.3937 Y0.7874 Z1.1811\n";
+  const std::string metric = "\nS X0. Y200. Z100.\nE X10. Y20. Z30.";
+  const std::string inch = "\nS X0. Y7.874 Z3.9371\nE X0.3937 Y0.7874 Z1.1811";
   struct Case {
     const char* inch_system;
     std::optional<prp::Units> units;
@@ -127,10 +127,10 @@ TEST_F(EngineTest, FileSizePlaceholderIsReplacedWhenAsked) {
     std::string init, start, expected;
   };
   for (const Case& c : {
-           Case{"  print_file_size = 1\n", "  {nl, '(SIZE $$file_size$$)'}\n  {nl, 'M30'}\n", "(SIZE 14)\nM30\n"},
-           Case{"  print_file_size = 1\n", "  {nl, '$$file_size$$ $$file_size$$'}\n", "4 4\n"},
-           Case{"  print_file_size = 1\n", "  {nl, 'no placeholder'}\n", "no placeholder\n"},
-           Case{"", "  {nl, '(SIZE $$file_size$$)'}\n", "(SIZE $$file_size$$)\n"},
+           Case{"  print_file_size = 1\n", "  {nl, '(SIZE $$file_size$$)'}\n  {nl, 'M30'}\n", "\n(SIZE 14)\nM30"},
+           Case{"  print_file_size = 1\n", "  {nl, '$$file_size$$ $$file_size$$'}\n", "\n4 4"},
+           Case{"  print_file_size = 1\n", "  {nl, 'no placeholder'}\n", "\nno placeholder"},
+           Case{"", "  {nl, '(SIZE $$file_size$$)'}\n", "\n(SIZE $$file_size$$)"},
        })
     EXPECT_EQ(post("@init_post\n  numeric_def_f = '5.3'\n" + c.init + "endp\n@start_of_file\n" + c.start + "endp\n", trace),
               c.expected)
@@ -148,7 +148,7 @@ TEST_F(EngineTest, DirectivesSplitTheOutput) {
       "@proc\nlabel : 1\n@end_proc\n@proc\nlabel : 2\n@end_proc\n@proc\nlabel : 1\n@end_proc\n"
       "@end_of_file\n";
   EXPECT_EQ(post(gpp, trace),
-            "==> MAIN.NC <==\n%\nO1\nM99\nO1\nM99\nM30\n\n"
+            "==> MAIN.NC <==\n%\nO1\nM99\nO1\nM99\nM30\n"
             "==> O1.SPF <==\nO1\nM99\nO1\nM99\n\n"
             "==> O2.SPF <==\nO2\nM99\n");
 }

@@ -63,7 +63,9 @@ TEST_F(OutputFilesTest, DirectivesSwitchAppendDeleteAndCopy) {
   EXPECT_EQ(listing().size(), 1u) << "only the private temporary folder before commit";
   auto written = out.commit();
   EXPECT_EQ(written.size(), 2u);
-  EXPECT_EQ(slurp(dir / "MAIN.TAP"), "%\nmain 2\nfixture\nfixture\n%\n");
+  // Breaks come before lines; the one before a directive stays in the file it ends, the one after
+  // it goes with it (so SUB.SPF begins with its first line and TMP.NC ends with a break).
+  EXPECT_EQ(slurp(dir / "MAIN.TAP"), "\n%\nmain 2\nfixture\nfixture\n%");
   EXPECT_EQ(slurp(dir / "SUB.SPF"), "sub 1\nsub 2\n");
   EXPECT_EQ(listing(), (std::vector<std::string>{"MAIN.TAP", "SUB.SPF"}));
 }
@@ -78,7 +80,7 @@ TEST_F(OutputFilesTest, DeleteThenOpenStartsTheFileAgain) {
     out.execute({Verb::Close, "P.SPF"});
   }
   out.commit();
-  EXPECT_EQ(slurp(dir / "P.SPF"), "second\n");
+  EXPECT_EQ(slurp(dir / "P.SPF"), "second\n");  // the break before the close directive
 }
 
 TEST_F(OutputFilesTest, AFailedRunLeavesThePreviousFilesUntouched) {
@@ -118,7 +120,7 @@ TEST_F(OutputFilesTest, CommitReplacesTheOldFileAndRemovesDeletedOnes) {
   out.write_line("new");
   out.execute({Verb::Delete, "STALE.SPF"});
   out.commit();
-  EXPECT_EQ(slurp(dir / "MAIN.TAP"), "new\r\n");
+  EXPECT_EQ(slurp(dir / "MAIN.TAP"), "\r\nnew\r\n");  // the second break is the delete directive's
   EXPECT_EQ(listing(), (std::vector<std::string>{"MAIN.TAP"}));
 }
 
@@ -172,7 +174,7 @@ TEST_F(OutputFilesTest, StreamOutputNamesFilesOnlyWhenThereAreSeveral) {
     out.write_line("only");
     std::ostringstream s;
     out.commit_to(s);
-    EXPECT_EQ(s.str(), "only\n");
+    EXPECT_EQ(s.str(), "\nonly");
   }
   OutputFiles out(dir, OutputFiles::LineEnd::LF, true);
   out.set_main_path("MAIN.TAP");
@@ -181,7 +183,7 @@ TEST_F(OutputFilesTest, StreamOutputNamesFilesOnlyWhenThereAreSeveral) {
   out.write_line("sub");
   std::ostringstream s;
   out.commit_to(s);
-  EXPECT_EQ(s.str(), "==> MAIN.TAP <==\nmain\n\n==> O1.SPF <==\nsub\n");
+  EXPECT_EQ(s.str(), "==> MAIN.TAP <==\n\nmain\n\n==> O1.SPF <==\nsub");
   EXPECT_TRUE(listing().empty()) << "stream output writes nothing in the output folder";
 }
 
@@ -196,21 +198,27 @@ TEST_F(OutputFilesTest, BufferedLinesKeepTheirOrderAcrossFilesAndCopies) {
   out.set_main_path(dir / "MAIN.TAP");
   std::string main_expected, sub_expected;
   const std::string long_line(200'000, 'x');
+  bool break_taken = false;  // by the directive before
   auto main_line = [&](const std::string& text) {
     out.write_line(text);
-    main_expected += text + "\r\n";
+    main_expected += (break_taken ? "" : "\r\n") + text;
+    break_taken = false;
   };
   for (int i = 0; i < 5000; ++i) main_line("N" + std::to_string(i) + " G1 X" + std::to_string(i * 3));
   main_line(long_line);
   out.execute({Verb::Open, "SUB.SPF"});
+  main_expected += "\r\n";
   for (int i = 0; i < 3000; ++i) {
     out.write_line("sub " + std::to_string(i));
-    sub_expected += "sub " + std::to_string(i) + "\r\n";
+    sub_expected += (i == 0 ? "" : "\r\n") + std::string("sub ") + std::to_string(i);
   }
   out.execute({Verb::Close, "SUB.SPF"});
+  sub_expected += "\r\n";
+  break_taken = true;
   main_line("after");
   out.execute({Verb::Copy, "SUB.SPF"});
-  main_expected += sub_expected;
+  main_expected += "\r\n" + sub_expected;
+  break_taken = true;
   main_line(long_line);
   main_line("");
   main_line("%");

@@ -1,3 +1,4 @@
+
 %
 (OUT - PROGRAM 2024)
 (OPERATOR J. SMITH)

@@ -1,3 +1,4 @@
+
 (LOOP 1 N1-N5)
 (LOOP 2 N1-N3)
 N1 L1
