@@ -70,7 +70,47 @@ struct Slots {
   return {pair_name_length(text.substr(at)), false};
 }
 
+// The length of `name :` (blanks before the colon, then a blank or the end of the line) at the
+// start of `s`, else 0: how a user parameter opens. `Note: Ask` (no blank before the colon) is text.
+std::size_t user_pair_name_length(std::string_view s) {
+  const std::size_t n = ident_length(s);
+  if (n == 0 || n >= s.size() || !is_blank(s[n])) return 0;
+  const std::size_t colon = skip_blanks(s, n);
+  if (colon >= s.size() || s[colon] != ':') return 0;
+  return colon + 1 == s.size() || is_blank(s[colon + 1]) ? colon + 1 : 0;
+}
+
+// Where a user parameter's value that starts at `v` ends: at the blanks before the next
+// `name :`, else at the end of the line. It may hold blanks and colons.
+std::size_t user_value_end(std::string_view text, std::size_t v) {
+  for (std::size_t k = v; k < text.size(); ++k) {
+    if (!is_blank(text[k])) continue;
+    const std::size_t m = skip_blanks(text, k);
+    if (user_pair_name_length(text.substr(m)) > 0) return k;
+    k = m - 1;
+  }
+  return text.size();
+}
+
 }  // namespace
+
+// The job's and the machine's user parameters, as SolidCAM writes them on `..>` lines of
+// @start_of_file and @start_of_job: `name : value` pairs separated by blanks, the value unquoted
+// and possibly empty or holding blanks and colons (`sWCM_MSG : Note: Ask your supervisor!`).
+// Values are typed as anywhere else (parse_value_into); the post's variable converts them.
+void TraceReader::parse_user_pairs(Command& out, std::string_view text, std::size_t i, std::size_t column) {
+  while (i < text.size()) {
+    const std::size_t n = user_pair_name_length(text.substr(i));
+    if (n == 0) fail(column + i, "expected `name : value`");
+    Parameter& param = add_parameter(out, used_parameters_, text.substr(i, ident_length(text.substr(i))));
+    std::size_t v = skip_blanks(text, i + n);
+    // An empty value: the next pair (or the end of the line) follows at once.
+    const std::size_t end = user_pair_name_length(text.substr(v)) > 0 ? v : user_value_end(text, v);
+    mark_position(param, line_number_, column + v);
+    parse_value_into(param.value, text.substr(v, end - v), Place{file_, line_number_, column + v});
+    i = skip_blanks(text, end);
+  }
+}
 
 namespace trace_syntax {
 
@@ -93,6 +133,7 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   Slots slots(out);
   PairName name = name_at(slots, used_parameters_, text, i);
   if (name.length == 0) {
+    if (user_pair_name_length(text.substr(i)) > 0) return parse_user_pairs(out, text, i, column);
     // Free text: the whole remainder without the one separating blank.
     std::string_view kept = text.substr(text.front() == ' ' ? 1 : 0);
     out.trace.push_back({otherwise, std::string(otherwise == TraceLine::Kind::Partial ? kept : trim_right(kept))});

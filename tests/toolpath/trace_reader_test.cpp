@@ -155,6 +155,44 @@ TEST(TraceReader, SolidCamLayout) {
   for (std::size_t i = 0; i < all.size(); ++i) EXPECT_EQ(all[i].index, i);
 }
 
+// User parameters, as SolidCAM writes them at @start_of_file and @start_of_job: `name : value`
+// pairs, the value unquoted, possibly empty, possibly with blanks and colons.
+TEST(TraceReader, UserParameterLines) {
+  struct Case {
+    const char* name;
+    const char* line;  // after `..>`
+    std::vector<std::pair<std::string, Value>> expected;
+  } cases[] = {
+      {"Numbers", " iWorkOffset_Method : 0  iNumber_of_Fixtures : 0  bToolPreselect : 1  Iteration_For_M8 : 1  ",
+       {{"iWorkOffset_Method", Value::make_integer(0)}, {"iNumber_of_Fixtures", Value::make_integer(0)},
+        {"bToolPreselect", Value::make_integer(1)}, {"Iteration_For_M8", Value::make_integer(1)}}},
+      {"Decimal", " nM8_CommitInterval : 1.000  bSPF_CM : 0  ",
+       {{"nM8_CommitInterval", Value::make_numeric(1.0)}, {"bSPF_CM", Value::make_integer(0)}}},
+      {"TextWithColonAndBlanks", " sWCM_MSG : Note: Ask your supervisor!  iX : 2",
+       {{"sWCM_MSG", Value::make_string("Note: Ask your supervisor!")}, {"iX", Value::make_integer(2)}}},
+      {"EmptyValues", " sA :   sB :  iC : 3", {{"sA", Value::make_string("")}, {"sB", Value::make_string("")},
+                                               {"iC", Value::make_integer(3)}}},
+      {"EmptyLast", " sA : 1  sB :", {{"sA", Value::make_integer(1)}, {"sB", Value::make_string("")}}},
+      {"Word", " sMode : ROUGH", {{"sMode", Value::make_enum("ROUGH")}}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    auto all = read_all(std::string("(1)@start_of_job    ==> job_name:'F-contour1' \n") +
+                        "                    ..>" + c.line + "\n");
+    ASSERT_EQ(all.size(), 1u);
+    ASSERT_EQ(all[0].parameters.size(), c.expected.size() + 1);
+    EXPECT_TRUE(all[0].trace.empty()) << "kept as parameters, not as a note";
+    for (const auto& [name, value] : c.expected) {
+      ASSERT_NE(all[0].find(name), nullptr) << name;
+      EXPECT_EQ(*all[0].find(name), value) << name;
+    }
+  }
+  // A `..>` line of free text that is not pairs is still a note.
+  auto note = read_all("(0)@tmatrix         ==> \n                    ..> around Z\n");
+  ASSERT_EQ(note[0].trace.size(), 1u);
+  EXPECT_EQ(note[0].trace[0], (TraceLine{TraceLine::Kind::Note, "around Z"}));
+}
+
 TEST(TraceReader, ManualExampleHas210Commands) {
   auto reader = TraceReader::open("golden/solidcam-fanuc/toolpath.trace");
   Command c;
