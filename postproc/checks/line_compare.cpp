@@ -13,21 +13,34 @@ bool blank(char c) { return c == ' ' || c == '\t'; }
 
 // Replaces dates and times in `text` (a comment) with `#`: `21.11.2025`, `2025-11-21`, `21-NOV-2025`,
 // `12:05`, `12:05:33`. A plain decimal number (one `.`) is not a date.
+// A month word that opens a date (`JUL-12-2026`, `JUL- 9-2026`, as SolidCAM's posts print it).
+bool month_opens_date(std::string_view text, std::size_t i) {
+  if (i + 4 >= text.size() || !alpha(text[i]) || !alpha(text[i + 1]) || !alpha(text[i + 2]) || alpha(text[i + 3])) return false;
+  if (text[i + 3] != '-' && text[i + 3] != '/' && text[i + 3] != '.') return false;
+  std::size_t k = i + 4;
+  while (k < text.size() && blank(text[k])) ++k;
+  return k < text.size() && digit(text[k]);
+}
+
 std::string mask_datetime(std::string_view text) {
   std::string out;
   std::size_t i = 0;
   while (i < text.size()) {
-    if (!digit(text[i]) || (i > 0 && (digit(text[i - 1]) || alpha(text[i - 1])))) {
+    const bool opens = i == 0 || !(digit(text[i - 1]) || alpha(text[i - 1]));
+    const bool month = opens && month_opens_date(text, i);
+    if (!opens || !(digit(text[i]) || month)) {
       out += text[i++];
       continue;
     }
     std::size_t j = i, separators = 0, colons = 0;
-    while (j < text.size() && digit(text[j])) ++j;
+    while (j < text.size() && (digit(text[j]) || (month && alpha(text[j])))) ++j;
     while (j + 1 < text.size() && (text[j] == '.' || text[j] == '/' || text[j] == '-' || text[j] == ':') &&
-           (digit(text[j + 1]) || (text[j] != ':' && alpha(text[j + 1])))) {
+           (digit(text[j + 1]) || (text[j] != ':' && alpha(text[j + 1])) ||
+            (text[j] == '-' && blank(text[j + 1]) && j + 2 < text.size() && digit(text[j + 2])))) {
       colons += text[j] == ':';
       ++separators;
       ++j;
+      if (blank(text[j])) ++j;  // a day padded with a blank: `JUL- 9-2026`
       if (digit(text[j]))
         while (j < text.size() && digit(text[j])) ++j;
       else
@@ -100,6 +113,21 @@ bool match_with_tolerance(std::string_view a, std::string_view b, double toleran
   return i == a.size() && j == b.size();
 }
 
+// The comments of a line without their digits and blanks: two lines that hold a date or a time in
+// a comment match when they differ in that value only, even where its width differs
+// (`JUL- 9-2026-3:37:23PM` against `JUL-12-2026-11:04:10AM`).
+std::string without_comment_digits(std::string_view line) {
+  std::string out;
+  bool comment = false;
+  for (char c : line) {
+    if (c == '(' || c == ';') comment = true;
+    if (comment && (digit(c) || blank(c))) continue;
+    if (c == ')') comment = false;
+    out += c;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string normalize_line(std::string_view line, const CompareOptions& o) {
@@ -125,7 +153,9 @@ bool lines_match(std::string_view expected, std::string_view actual, const Compa
   bool plain = !o.ignore_block_numbers && !o.ignore_trailing_blanks && !o.ignore_leading_blanks && !o.ignore_datetime;
   if (plain && o.numeric_tolerance <= 0) return expected == actual;
   std::string a = normalize_line(expected, o), b = normalize_line(actual, o);
-  return o.numeric_tolerance > 0 ? match_with_tolerance(a, b, o.numeric_tolerance) : a == b;
+  if (o.numeric_tolerance > 0 ? match_with_tolerance(a, b, o.numeric_tolerance) : a == b) return true;
+  return o.ignore_datetime && a.find('#') != std::string::npos && b.find('#') != std::string::npos &&
+         without_comment_digits(a) == without_comment_digits(b);
 }
 
 }  // namespace postproc

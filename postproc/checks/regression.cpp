@@ -2,10 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "postproc/engine/slot_marker.hpp"
 #include "toolpath/bounded_read.hpp"
+#include "toolpath/value.hpp"
 
 namespace postproc {
 namespace {
@@ -111,6 +114,7 @@ void RegressionComparer::filled(std::uint32_t id, std::string_view text) {
       ++i;
       continue;
     }
+    streams_[deferred_[i].d.stream].produced_lines[deferred_[i].d.line - 1] = actual;
     compare(deferred_[i]);
     deferred_.erase(deferred_.begin() + std::ptrdiff_t(i));
   }
@@ -128,7 +132,10 @@ void RegressionComparer::produced(const std::string& stream, std::string_view te
   const std::uint64_t order = produced_++;
   if (!s.expected) return;
   ++compared_;
+  s.produced_lines.emplace_back(text);
+  if (keep_origins_) s.origins.push_back(describe(origin));
   if (!s.expected_done && s.expected->next(scratch_)) {
+    s.expected_lines.push_back(scratch_.text);
     if (slot::find_marker(text))
       deferred_.push_back({{stream, s.line, scratch_, std::string(text), describe(origin)}, order});
     else if (!lines_match(scratch_.text, text, options_))
@@ -149,14 +156,171 @@ void RegressionComparer::discarded(const std::string& stream) {
 void RegressionComparer::finish() {
   for (auto& d : deferred_) {  // placeholders never filled (the run failed): shown as `{?N}`
     *d.d.actual = slot::readable(*d.d.actual);
+    streams_[d.d.stream].produced_lines[d.d.line - 1] = *d.d.actual;
     compare(d);
   }
   deferred_.clear();
   for (auto& [name, s] : streams_) {
     if (!s.expected || s.expected_done) continue;
-    while (s.expected->next(scratch_)) record({name, ++s.line, scratch_, std::nullopt, ""}, produced_++);
+    while (s.expected->next(scratch_)) {
+      s.expected_lines.push_back(scratch_.text);
+      record({name, ++s.line, scratch_, std::nullopt, ""}, produced_++);
+    }
     s.expected_done = true;
   }
+}
+
+bool RegressionComparer::has_stream(const std::string& name) const {
+  for (const auto& [stream, s] : streams_)
+    if (toolpath::iequals(stream, name)) return true;
+  return false;
+}
+
+void RegressionComparer::not_written(const std::string& stream) {
+  if (streams_.count(stream)) return;
+  Stream& s = streams_[stream];
+  s.expected = opener_(stream);
+  s.written = false;
+  if (!s.expected) return;
+  while (s.expected->next(scratch_)) {
+    s.expected_lines.push_back(scratch_.text);
+    record({stream, ++s.line, scratch_, std::nullopt, "the run wrote no such file"}, produced_++);
+  }
+  s.expected_done = true;
+}
+
+// Myers' O(ND) difference algorithm on the lines as the comparison sees them (the options
+// applied, each distinct line numbered once), stopping at kMaxEdits: past that the streams are
+// too different for an alignment to mean much, and they are compared place by place.
+RegressionComparer::Alignment RegressionComparer::align(const Stream& s) const {
+  constexpr long kMaxEdits = 2000;
+  std::unordered_map<std::string, int> ids;
+  auto numbered = [&](const std::vector<std::string>& lines) {
+    std::vector<int> out;
+    out.reserve(lines.size());
+    for (const auto& l : lines) out.push_back(ids.emplace(normalize_line(l, options_), int(ids.size())).first->second);
+    return out;
+  };
+  const std::vector<int> a = numbered(s.expected_lines), b = numbered(s.produced_lines);
+  const long n = long(a.size()), m = long(b.size());
+  Alignment result;
+  const long max = std::min(n + m, kMaxEdits);
+  std::vector<long> v(std::size_t(2 * max + 2), 0);
+  std::vector<std::vector<long>> history;  // v before each round, for the way back
+  long found = -1;
+  for (long d = 0; d <= max && found < 0; ++d) {
+    history.push_back(v);
+    for (long k = -d; k <= d; k += 2) {
+      const std::size_t at = std::size_t(k + max);
+      long x = (k == -d || (k != d && v[at - 1] < v[at + 1])) ? v[at + 1] : v[at - 1] + 1;
+      long y = x - k;
+      while (x < n && y < m && a[std::size_t(x)] == b[std::size_t(y)]) ++x, ++y;
+      v[at] = x;
+      if (x >= n && y >= m) {
+        found = d;
+        break;
+      }
+    }
+  }
+  if (found < 0) {  // place by place
+    result.approximate = true;
+    const std::size_t common = std::min(a.size(), b.size());
+    for (std::size_t i = 0; i < common; ++i)
+      if (a[i] != b[i]) result.hunks.push_back({i, 1, i, 1});
+    if (a.size() != b.size())
+      result.hunks.push_back({common, a.size() - common, common, b.size() - common});
+    return result;
+  }
+  // Back from (n, m): each round adds one deleted or inserted line, then a run of equal ones.
+  std::vector<DiffHunk> edits;  // one line each, from the end
+  long x = n, y = m;
+  for (long d = found; d > 0; --d) {
+    const std::vector<long>& pv = history[std::size_t(d)];
+    const long k = x - y;
+    const std::size_t at = std::size_t(k + max);
+    const bool down = k == -d || (k != d && pv[at - 1] < pv[at + 1]);
+    const long pk = down ? k + 1 : k - 1;
+    const long px = pv[std::size_t(pk + max)], py = px - pk;
+    while (x > px + (down ? 0 : 1) && y > py + (down ? 1 : 0)) --x, --y;  // the equal run
+    if (down) edits.push_back({std::size_t(px), 0, std::size_t(py), 1});  // inserted b[py]
+    else edits.push_back({std::size_t(px), 1, std::size_t(py), 0});      // deleted a[px]
+    x = px;
+    y = py;
+  }
+  // Adjacent single edits become hunks.
+  for (auto it = edits.rbegin(); it != edits.rend(); ++it) {
+    if (!result.hunks.empty()) {
+      DiffHunk& last = result.hunks.back();
+      if (last.expected_first + last.expected_count == it->expected_first &&
+          last.produced_first + last.produced_count == it->produced_first) {
+        last.expected_count += it->expected_count;
+        last.produced_count += it->produced_count;
+        continue;
+      }
+    }
+    result.hunks.push_back(*it);
+  }
+  return result;
+}
+
+StreamParity RegressionComparer::figure(const std::string& name, const Stream& s) const {
+  StreamParity p;
+  p.stream = name;
+  p.expected = s.expected_lines.size();
+  p.produced = s.produced_lines.size();
+  p.written = s.written;
+  const Alignment alignment = align(s);
+  p.approximate = alignment.approximate;
+  std::size_t missing = 0;
+  auto differs_at = [&](std::size_t expected_line) {
+    if (p.first_difference == 0) p.first_difference = expected_line + 1;
+  };
+  for (const DiffHunk& h : alignment.hunks) {
+    // Lines that differ only where the options allow (a date, a number within tolerance) count as
+    // identical when they stand in the same place of a hunk.
+    if (h.expected_count == 0) differs_at(h.expected_first);  // lines of ours SolidCAM does not have
+    for (std::size_t i = 0; i < h.expected_count; ++i) {
+      if (i < h.produced_count &&
+          lines_match(s.expected_lines[h.expected_first + i], s.produced_lines[h.produced_first + i], options_))
+        continue;
+      ++missing;
+      differs_at(h.expected_first + i);
+    }
+    if (h.produced_count > h.expected_count) differs_at(h.expected_first + h.expected_count);
+  }
+  p.identical = p.expected - missing;
+  return p;
+}
+
+std::vector<StreamParity> RegressionComparer::parity() const {
+  std::vector<StreamParity> out;
+  for (const auto& [name, s] : streams_)
+    if (s.expected) out.push_back(figure(name, s));
+  return out;
+}
+
+std::string RegressionComparer::diff_report() const {
+  std::string r;
+  for (const auto& [name, s] : streams_) {
+    if (!s.expected) continue;
+    const Alignment alignment = align(s);
+    for (const DiffHunk& h : alignment.hunks) {
+      bool same = h.expected_count == h.produced_count;
+      for (std::size_t i = 0; same && i < h.expected_count; ++i)
+        same = lines_match(s.expected_lines[h.expected_first + i], s.produced_lines[h.produced_first + i], options_);
+      if (same) continue;
+      r += fmt::format("@@ {} expected line {}, output line {} @@\n", name, h.expected_first + 1, h.produced_first + 1);
+      for (std::size_t i = 0; i < h.expected_count; ++i)
+        r += fmt::format("- {}\n", toolpath::excerpt(s.expected_lines[h.expected_first + i], 200));
+      for (std::size_t i = 0; i < h.produced_count; ++i) {
+        const std::size_t at = h.produced_first + i;
+        r += fmt::format("+ {}", toolpath::excerpt(s.produced_lines[at], 200));
+        if (at < s.origins.size() && !s.origins[at].empty()) r += fmt::format("    <- {}", s.origins[at]);
+        r += '\n';
+      }
+    }
+  }
+  return r;
 }
 
 std::string RegressionComparer::report() const {

@@ -48,6 +48,26 @@ struct Difference {
   std::string origin;     // "command #21 @arc, procedure @arc (fanuc.gpp:142)" (empty when none)
 };
 
+// How much of one stream's expected output the run reproduced: the expected lines that an output
+// line matches, the two sides aligned as `diff` aligns them (a missing line costs that line, not
+// every line after it).
+struct StreamParity {
+  std::string stream;
+  std::size_t expected = 0;          // lines expected
+  std::size_t produced = 0;          // lines the run wrote
+  std::size_t identical = 0;         // expected lines matched, in order
+  std::size_t first_difference = 0;  // 1-based line of the expected side; 0: none
+  bool approximate = false;          // too different to align: lines compared place by place
+  bool written = true;               // false: expected, but the run wrote no such file
+};
+
+// One `diff` hunk: expected lines [expected_first, +expected_count) replaced by produced lines
+// [produced_first, +produced_count), 0-based.
+struct DiffHunk {
+  std::size_t expected_first = 0, expected_count = 0;
+  std::size_t produced_first = 0, produced_count = 0;
+};
+
 class RegressionComparer {
 public:
   // Opens the expected lines of a stream, or returns nullptr when there is no golden data for it.
@@ -74,17 +94,39 @@ public:
   // "OUT.TAP:39: ..." with the expected and actual text and the origin.
   std::string report() const;
 
+  // After finish(): the parity figure of every stream that had golden data, in name order. The
+  // lines of those streams are kept for it (memory grows with the golden files, not the job).
+  std::vector<StreamParity> parity() const;
+  // An expected file the run never wrote (a golden folder's file): all of its lines are missing.
+  void not_written(const std::string& stream);
+  bool has_stream(const std::string& name) const;  // the run wrote it (any case)
+  // With keep_origins(): after finish(), every difference of every stream as unified-diff hunks,
+  // each output line followed by the command and the GPP line that wrote it.
+  void keep_origins() { keep_origins_ = true; }
+  std::string diff_report() const;
+
 private:
   struct Stream {
     std::unique_ptr<ExpectedLines> expected;  // null: no golden data
     std::size_t line = 0;
     bool expected_done = false;
+    bool written = true;
     std::string last_origin;
+    std::vector<std::string> expected_lines;  // both sides, for the parity figure
+    std::vector<std::string> produced_lines;
+    std::vector<std::string> origins;         // of produced_lines, with keep_origins()
   };
   struct Deferred {
     Difference d;  // expected and actual, not yet compared
     std::uint64_t order = 0;
   };
+  struct Alignment {
+    std::vector<DiffHunk> hunks;
+    bool approximate = false;
+  };
+  Alignment align(const Stream& s) const;
+  StreamParity figure(const std::string& name, const Stream& s) const;
+  bool keep_origins_ = false;
   void record(Difference d, std::uint64_t order);
   void compare(Deferred& deferred);
   std::string describe(const LineOrigin& o) const;

@@ -1,12 +1,15 @@
 // `postproc test JOB.trace --post P.gpp [--expect DIR|FILE] [--update]`: regression test of a post.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <ostream>
+#include <vector>
 
 #include "postproc/cli/cli.hpp"
 #include "postproc/engine/directive.hpp"
 #include "postproc/cli/cli_support.hpp"
 #include "postproc/checks/regression.hpp"
+#include "toolpath/value.hpp"
 
 namespace postproc::cli {
 namespace {
@@ -20,7 +23,7 @@ public:
       : comparer_(comparer), mode_(mode), trace_name_(std::move(trace_name)) {}
   void on_line(const LineEvent& e) override {
     if (mode_ == Mode::Trace) {
-      comparer_.produced(trace_name_, e.text, e.origin);
+      if (!e.leading_break) comparer_.produced(trace_name_, e.text, e.origin);  // no `>` line shows it
       return;
     }
     if (e.directive) {  // executed, never written; a file the run deletes is not left "not compared"
@@ -56,6 +59,55 @@ CompareOptions compare_options(const Arguments& args) {
       throw UsageError{"--tolerance needs a number >= 0, not `" + t + "`"};
   }
   return o;
+}
+
+// The golden file of an output file in a golden folder: the same name, else the same name in
+// another case (SolidCAM runs on Windows: `g_file_name` says `PART_MILLING.MPF` where the file on
+// disk is `Part_Milling.MPF`). Empty when there is none.
+std::filesystem::path golden_file(const std::string& folder, const std::string& stream) {
+  std::filesystem::path exact = std::filesystem::path(folder) / stream;
+  if (std::filesystem::exists(exact)) return exact;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error))
+    if (entry.is_regular_file() && toolpath::iequals(entry.path().filename().string(), stream)) return entry.path();
+  return {};
+}
+
+// The NC files of a golden folder: everything but the job, the post and notes kept beside them.
+std::vector<std::string> golden_files(const std::string& folder) {
+  static const char* const not_output[] = {".trace", ".gpp", ".prp", ".vmid", ".mac", ".md", ".txt", ".json"};
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    if (!entry.is_regular_file()) continue;
+    std::string ext = entry.path().extension().string();
+    bool output = true;
+    for (const char* e : not_output) output = output && !toolpath::iequals(ext, e);
+    if (output) names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// One line a file, `NAME: 312/315 lines identical, first difference at line 41`, then the sum.
+std::string parity_figures(const std::vector<StreamParity>& figures, const std::string& main_name,
+                           const std::string& main_key) {
+  std::string r;
+  std::size_t identical = 0, expected = 0;
+  for (const auto& p : figures) {
+    identical += p.identical;
+    expected += p.expected;
+    r += fmt::format("{}: {}/{} lines identical", p.stream == main_key ? main_name : p.stream, p.identical, p.expected);
+    if (!p.written) r += " (the run wrote no such file)";
+    else if (p.first_difference > 0) r += fmt::format(", first difference at line {}", p.first_difference);
+    if (p.produced != p.expected && p.written) r += fmt::format(" ({} lines written)", p.produced);
+    if (p.approximate) r += " (too different to align: compared line by line)";
+    r += '\n';
+  }
+  const double percent = expected == 0 ? 100.0 : 100.0 * double(identical) / double(expected);
+  r += fmt::format("parity: {}/{} lines identical ({:.1f}%) in {} file{}\n", identical, expected,
+                   percent, figures.size(), figures.size() == 1 ? "" : "s");
+  return r;
 }
 
 int update_golden(const Engine& engine, Input& input, const std::string& expect, std::ostream& err, bool quiet) {
@@ -95,8 +147,8 @@ int run_test(const Arguments& args, std::ostream& out, std::ostream& err) {
       case Feeder::Mode::Trace: return expected_from_trace(input.path);
       case Feeder::Mode::File: return stream == main_key ? expected_from_file(expect) : nullptr;
       case Feeder::Mode::Folder: {
-        auto golden = std::filesystem::path(expect) / stream;
-        return std::filesystem::exists(golden) ? expected_from_file(golden.string()) : nullptr;
+        auto golden = golden_file(expect, stream);
+        return golden.empty() ? nullptr : expected_from_file(golden.string());
       }
     }
     return nullptr;
@@ -110,14 +162,26 @@ int run_test(const Arguments& args, std::ostream& out, std::ostream& err) {
   options.observer = &feeder;
   Progress progress(err, quiet, input);
   options.progress = [&](std::size_t n) { progress.update(n); };
+  const bool diff = args.has("--diff");
+  if (diff) comparer.keep_origins();
   engine.run(*input.reader, files, options);
+  if (mode == Feeder::Mode::Folder) {
+    // A golden file the run never wrote is missing output, all of it.
+    for (const auto& name : golden_files(expect))
+      if (!comparer.has_stream(name)) comparer.not_written(name);
+  }
   comparer.finish();
 
   std::string report = comparer.report();
+  const std::string stream_main = mode == Feeder::Mode::File ? expect : main_key;
   if (mode == Feeder::Mode::File) {
     // Name the main program by the golden file in the report.
     const std::string from = main_key + ":";
     if (report.rfind(from, 0) == 0) report = expect + ":" + report.substr(from.size());
+  }
+  if (comparer.difference_count() > 0 || args.has("--parity") || diff) {
+    out << parity_figures(comparer.parity(), stream_main, main_key);
+    if (diff) out << comparer.diff_report();
   }
   if (comparer.difference_count() > 0) {
     out << report;
@@ -144,6 +208,9 @@ Subcommand test_command() {
       {"--ignore-leading-blanks", "", false, "ignore blanks at line starts"},
       {"--ignore-dates", "", false, "ignore dates and times inside comments"},
       {"--tolerance", "", true, "numbers match when they differ by at most this much"},
+      {"--parity", "", false, "print the parity figure of every file even when the test passes"},
+      {"--diff", "", false, "print every difference, each output line with the command and GPP line "
+                            "that wrote it"},
       {"--quiet", "-q", false, "print nothing when the test passes; no progress bar"},
   });
   return {

@@ -46,9 +46,16 @@ TEST(LineCompare, OptionsTable) {
       {"   Z2.", "  Z2.", &leading, true},
       {"(DATE 21.11.2025 TIME 12:05)", "(DATE 01.02.2026 TIME 9:41:07)", &dates, true},
       {"(DATE 21-NOV-2025)", "(DATE 3-DEC-2026)", &dates, true},
+      {"; Date : JUL-12-2026", "; Date : AUG-13-2026", &dates, true},
+      {"; Date : JUL-12-2026", "; Date : JUL- 9-2026", &dates, true},
+      {"(JUL-12)", "(JUL-13)", &dates, false},
       {"; posted 2025/11/21", "; posted 2026/01/02", &dates, true},
       {"G1 X12.05 (12:05)", "G1 X12.06 (12:06)", &dates, false},
       {"(DIA 12.7)", "(DIA 12.8)", &dates, false},
+      // SolidCAM's Siemens posts: the day blank-padded, the hour not padded.
+      {"N30 ; Date \t\t: JUL-12-2026-3:43:33PM", "N30 ; Date \t\t: JUL- 9-2026-11:04:10PM", &dates, true},
+      {"N30 ; Date \t\t: JUL-12-2026-3:43:33PM", "N40 ; Date \t\t: JUL- 9-2026-11:04:10PM", &dates, false},
+      {"N30 ; Date : JUL-12-2026-3:43:33PM", "N30 ; Time : JUL- 9-2026-11:04:10PM", &dates, false},
       {"G1 X-16.35 Y2.", "G1 X-16.3504 Y2.0009", &tolerance, true},
       {"G1 X-16.35 Y2.", "G1 X-16.352 Y2.", &tolerance, false},
       {"G1 X-16.35", "G1 Y-16.35", &tolerance, false},
@@ -119,6 +126,53 @@ TEST(RegressionComparer, MissingAndExtraLinesAreDifferences) {
             "OUT.TAP:2: the output has more lines than expected\n"
             "  actual:   `M30`\n"
             "  produced by command #3 @end_program, procedure @end_program (fanuc.gpp:40)\n");
+}
+
+// The parity figure aligns the two sides as diff does: one missing line costs that line only.
+TEST(RegressionComparer, ParityFigureAlignsTheLines) {
+  struct Case {
+    const char* name;
+    std::deque<std::string> expected;
+    std::vector<std::string> produced;
+    std::size_t identical, first_difference;
+  } cases[] = {
+      {"Same", {"%", "G0 X1.", "M30"}, {"%", "G0 X1.", "M30"}, 3, 0},
+      {"OneMissing", {"%", "M8", "G0 X1.", "G1 X2.", "M30"}, {"%", "G0 X1.", "G1 X2.", "M30"}, 4, 2},
+      {"OneExtra", {"%", "G0 X1.", "M30"}, {"%", "G00", "G0 X1.", "M30"}, 3, 2},
+      {"OneChanged", {"%", "G0 X1.", "M30"}, {"%", "G0 X2.", "M30"}, 2, 2},
+      {"NothingWritten", {"%", "M30"}, {}, 0, 1},
+      {"DateValueOnly", {"; Date : JUL-12-2026", "M30"}, {"; Date : JUL- 9-2026", "M30"}, 2, 0},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    CompareOptions options;
+    options.ignore_datetime = true;
+    postproc::RegressionComparer r(
+        [&](const std::string&) -> std::unique_ptr<postproc::ExpectedLines> { return std::make_unique<Lines>(c.expected); },
+        options, "p.gpp");
+    for (const auto& line : c.produced) r.produced("OUT.NC", line, {});
+    if (c.produced.empty()) r.not_written("OUT.NC");
+    r.finish();
+    auto figures = r.parity();
+    ASSERT_EQ(figures.size(), 1u);
+    EXPECT_EQ(figures[0].expected, c.expected.size());
+    EXPECT_EQ(figures[0].identical, c.identical);
+    EXPECT_EQ(figures[0].first_difference, c.first_difference);
+    EXPECT_EQ(figures[0].written, !c.produced.empty());
+  }
+}
+
+TEST(RegressionComparer, DiffNamesTheProcedureOfEachLineOfOurs) {
+  auto c = comparer_for({"%", "M8", "G0 X1.", "M30"});
+  c.keep_origins();
+  postproc::LineOrigin origin{4, "@rapid_move", "@rapid_move", 33};
+  for (const char* line : {"%", "G0 X1.", "G0 X1.", "M30"}) c.produced("OUT.TAP", line, origin);
+  c.finish();
+  EXPECT_EQ(c.diff_report(),
+            "@@ OUT.TAP expected line 2, output line 2 @@\n"
+            "- M8\n"
+            "@@ OUT.TAP expected line 4, output line 3 @@\n"
+            "+ G0 X1.    <- command #4 @rapid_move, procedure @rapid_move (fanuc.gpp:33)\n");
 }
 
 TEST(RegressionComparer, ExpectedLinesOfATraceAreItsOutputLinesInOrder) {
