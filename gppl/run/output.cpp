@@ -48,6 +48,9 @@ void Interpreter::State::append_opening(std::string_view text) {
 void Interpreter::State::flush() {
   if (!line_open) return;
   line_open = false;
+  // The blank after a block number is written even when nothing follows it: SolidCAM's `{nb}`
+  // alone gives `N210370 ` (docs/gppl-language.md, "Block numbers").
+  if (separator_pending) line += ' ';
   separator_pending = false;
   if (!is_directive(line)) {
     if (globals[program.slots.remove_blanks].value.logical) line.erase(std::remove(line.begin(), line.end(), ' '), line.end());

@@ -155,10 +155,11 @@ blknum_letter = 'n'
 blknum_exist = FALSE
 {nb, 'A'})",
                      "A"},
+        // The blank after the number stays when nothing follows (SolidCAM: `N210370 `).
         GenerateCase{"numbered_empty_block", R"(blknum_gen = TRUE
 {nb}
 {nb, 'X'})",
-                     "N5\nN10 X"},
+                     "N5 \nN10 X"},
         GenerateCase{"items_append_to_open_line", "{nb, 'G91 G28 Z0.'}\n{' M5'}\n{nb, 'M6'}", "G91 G28 Z0. M5\nM6"},
         GenerateCase{"nl_on_empty_line", "{nl}\n{nl, 'A'}", "\nA"},
         GenerateCase{"colrel", "{nb, 'A' colrel(3) 'B' colrel(0) 'C'}", "A   BC"},

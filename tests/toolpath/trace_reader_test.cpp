@@ -187,6 +187,11 @@ TEST(TraceReader, UserParameterLines) {
       EXPECT_EQ(*all[0].find(name), value) << name;
     }
   }
+  // SolidCAM's `no parameters` after `==>` is neither a parameter nor unfinished output.
+  auto end = read_all("(1)@end_of_file     ==> no parameters\n");
+  ASSERT_EQ(end.size(), 1u);
+  EXPECT_TRUE(end[0].parameters.empty());
+  EXPECT_TRUE(end[0].trace.empty());
   // A `..>` line of free text that is not pairs is still a note.
   auto note = read_all("(0)@tmatrix         ==> \n                    ..> around Z\n");
   ASSERT_EQ(note[0].trace.size(), 1u);
