@@ -128,21 +128,44 @@ void RegressionComparer::produced(const std::string& stream, std::string_view te
     if (!it->second.expected) unmatched_.push_back(stream);
   }
   Stream& s = it->second;
+  if (s.held) release(stream, s);
+  if (file_lines_ && text.empty()) {
+    // An empty line is a line of the file only once a break follows it (break_written or the next
+    // line); the one `{nb, 'M2 ', nl}` leaves at the very end is not.
+    s.held = true;
+    s.held_origin = describe(origin);
+    s.held_order = produced_++;
+    return;
+  }
+  compare_line(stream, s, text, describe(origin), produced_++);
+}
+
+void RegressionComparer::break_written(const std::string& stream) {
+  auto it = streams_.find(stream);
+  if (it != streams_.end() && it->second.held) release(stream, it->second);
+}
+
+void RegressionComparer::release(const std::string& stream, Stream& s) {
+  s.held = false;
+  compare_line(stream, s, {}, std::move(s.held_origin), s.held_order);
+}
+
+void RegressionComparer::compare_line(const std::string& stream, Stream& s, std::string_view text, std::string origin,
+                                      std::uint64_t order) {
   ++s.line;
-  const std::uint64_t order = produced_++;
   if (!s.expected) return;
   ++compared_;
   s.produced_lines.emplace_back(text);
-  if (keep_origins_) s.origins.push_back(describe(origin));
+  if (keep_origins_) s.origins.push_back(origin);
   if (!s.expected_done && s.expected->next(scratch_)) {
     s.expected_lines.push_back(scratch_.text);
     if (slot::find_marker(text))
-      deferred_.push_back({{stream, s.line, scratch_, std::string(text), describe(origin)}, order});
+      deferred_.push_back({{stream, s.line, scratch_, std::string(text), std::move(origin)}, order});
     else if (!lines_match(scratch_.text, text, options_))
-      record({stream, s.line, scratch_, std::string(text), describe(origin)}, order);
+      record({stream, s.line, scratch_, std::string(text), std::move(origin)}, order);
   } else {
     s.expected_done = true;
-    record({stream, s.line, std::nullopt, std::string(text), describe(origin)}, order);
+    record({stream, s.line, std::nullopt, std::string(text), std::move(origin)}, order);
   }
 }
 

@@ -78,6 +78,11 @@ public:
   // One produced line of `stream`. A line with placeholders (start_line/end_line not known yet) is
   // compared once filled() has supplied all of them; memory holds only such lines.
   void produced(const std::string& stream, std::string_view text, const LineOrigin& origin);
+  // Compare the lines of the files as written (golden files), not the lines as generated: an empty
+  // line at the very end of a file, one no line break follows, is not a line of the file. The
+  // caller then tells break_written() when a directive line wrote the break after the last line.
+  void compare_file_lines() { file_lines_ = true; }
+  void break_written(const std::string& stream);
   // A placeholder's final text (LineObserver::on_slot_filled).
   void filled(std::uint32_t slot, std::string_view text);
   // A stream the run deleted (`!! delete file = X !!`): no longer reported as not compared.
@@ -115,7 +120,14 @@ private:
     std::vector<std::string> expected_lines;  // both sides, for the parity figure
     std::vector<std::string> produced_lines;
     std::vector<std::string> origins;         // of produced_lines, with keep_origins()
+    bool held = false;                        // an empty line waiting for a break (compare_file_lines)
+    std::string held_origin;
+    std::uint64_t held_order = 0;
   };
+  void release(const std::string& stream, Stream& s);
+  void compare_line(const std::string& stream, Stream& s, std::string_view text, std::string origin,
+                    std::uint64_t order);
+  bool file_lines_ = false;
   struct Deferred {
     Difference d;  // expected and actual, not yet compared
     std::uint64_t order = 0;

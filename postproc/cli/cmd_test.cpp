@@ -27,6 +27,8 @@ public:
       return;
     }
     if (e.directive) {  // executed, never written; a file the run deletes is not left "not compared"
+      // The break before the directive ends the file's last line (an empty one included).
+      comparer_.break_written(mode_ == Mode::File && e.main_file ? main_name_ : std::string(e.file));
       if (auto d = parse_directive(e.text); d && d->verb == Directive::Verb::Delete) comparer_.discarded(d->name);
       return;
     }
@@ -164,6 +166,7 @@ int run_test(const Arguments& args, std::ostream& out, std::ostream& err) {
   options.progress = [&](std::size_t n) { progress.update(n); };
   const bool diff = args.has("--diff");
   if (diff) comparer.keep_origins();
+  if (mode != Feeder::Mode::Trace) comparer.compare_file_lines();
   engine.run(*input.reader, files, options);
   if (mode == Feeder::Mode::Folder) {
     // A golden file the run never wrote is missing output, all of it.

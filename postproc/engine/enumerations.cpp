@@ -62,7 +62,7 @@ Enumerations::Enumerations(const std::vector<std::string>& drill_type_names) {
   declare_group({"no", "yes"}, 0, false);
   // Drill cycles: the PRP's own names first, then the internal types (a PRP normally names its cycles
   // after them, as the FANUC one does: `drill_type = Peck Peck Y Delay`).
-  std::int64_t drill_code = 1;
+  std::int64_t drill_code = 0;  // SolidCAM numbers the machine's cycles from 0: `drill_type:0` is the first
   for (const auto& name : drill_type_names)
     if (!by_lower_name_.count(lower(name))) {
       by_lower_name_.emplace(lower(name), drill_code);

@@ -162,6 +162,21 @@ TEST(RegressionComparer, ParityFigureAlignsTheLines) {
   }
 }
 
+// Against golden files the lines are the file's: an empty line no break follows (the end of a file
+// after `{nb, 'M2 ', nl}`) is not one; the break before a directive makes it one.
+TEST(RegressionComparer, FileLinesEndWithTheLastBreak) {
+  for (bool directive_after : {false, true}) {
+    SCOPED_TRACE(directive_after);
+    auto c = comparer_for(directive_after ? std::deque<std::string>{"", "M2 ", ""} : std::deque<std::string>{"", "M2 "});
+    c.compare_file_lines();
+    for (const char* line : {"", "M2 ", ""}) c.produced("OUT.TAP", line, {});
+    if (directive_after) c.break_written("OUT.TAP");
+    c.finish();
+    EXPECT_EQ(c.difference_count(), 0u) << c.report();
+    EXPECT_EQ(c.lines_compared(), directive_after ? 3u : 2u);
+  }
+}
+
 TEST(RegressionComparer, DiffNamesTheProcedureOfEachLineOfOurs) {
   auto c = comparer_for({"%", "M8", "G0 X1.", "M30"});
   c.keep_origins();

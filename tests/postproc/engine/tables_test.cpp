@@ -68,10 +68,11 @@ TEST(Enumerations, CodesAreStableAndCaseInsensitive) {
   EXPECT_EQ(e.code("turning"), 1);
   EXPECT_EQ(e.code("xy"), e.code("XY"));
   EXPECT_EQ(e.code("COMP_OFF"), 3);
-  EXPECT_EQ(e.code("drilling"), 1);
-  EXPECT_EQ(e.code("g84_2"), 2);
-  EXPECT_EQ(e.code("peck"), 3);
-  EXPECT_EQ(e.code("F_Drill"), 4) << "internal cycle types follow the PRP's own names";
+  // The machine's cycles count from 0, as SolidCAM's traces do (`drill_type:0` is the first cycle).
+  EXPECT_EQ(e.code("drilling"), 0);
+  EXPECT_EQ(e.code("g84_2"), 1);
+  EXPECT_EQ(e.code("peck"), 2);
+  EXPECT_EQ(e.code("F_Drill"), 3) << "internal cycle types follow the PRP's own names";
   // Real SolidCAM traces: `flood_coolant:on` is 1 (posts test `eq 1`), `off` 0, `no_action` 2;
   // `msr_len:no` 0, `MCO_New_Line:yes` 1. Codes only, not constants a post could collide with.
   EXPECT_EQ(e.code("on"), 1);
@@ -84,7 +85,7 @@ TEST(Enumerations, CodesAreStableAndCaseInsensitive) {
   EXPECT_EQ(e.code("SALAMAT"), unknown);
   EXPECT_NE(e.code("other_word"), unknown);
   const auto& all = e.constants();
-  EXPECT_TRUE(std::any_of(all.begin(), all.end(), [](const auto& c) { return c.name == "G84_2" && c.code == 2; }));
+  EXPECT_TRUE(std::any_of(all.begin(), all.end(), [](const auto& c) { return c.name == "G84_2" && c.code == 1; }));
   EXPECT_EQ(std::count_if(all.begin(), all.end(), [](const auto& c) { return toolpath::iequals(c.name, "XY"); }), 1);
   EXPECT_TRUE(std::none_of(all.begin(), all.end(), [](const auto& c) { return toolpath::iequals(c.name, "on"); }));
 }
