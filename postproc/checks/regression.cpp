@@ -292,6 +292,10 @@ StreamParity RegressionComparer::figure(const std::string& name, const Stream& s
   p.expected = s.expected_lines.size();
   p.produced = s.produced_lines.size();
   p.written = s.written;
+  if (!s.written) {  // nothing to align: every line is missing
+    p.first_difference = p.expected > 0 ? 1 : 0;
+    return p;
+  }
   const Alignment alignment = align(s);
   p.approximate = alignment.approximate;
   std::size_t missing = 0;
@@ -326,6 +330,10 @@ std::string RegressionComparer::diff_report() const {
   std::string r;
   for (const auto& [name, s] : streams_) {
     if (!s.expected) continue;
+    if (!s.written) {  // the figure says it; its lines are the golden file's
+      r += fmt::format("@@ {}: the run wrote no such file ({} lines expected) @@\n", name, s.expected_lines.size());
+      continue;
+    }
     const Alignment alignment = align(s);
     for (const DiffHunk& h : alignment.hunks) {
       bool same = h.expected_count == h.produced_count;

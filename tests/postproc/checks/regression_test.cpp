@@ -151,7 +151,10 @@ TEST(RegressionComparer, ParityFigureAlignsTheLines) {
         [&](const std::string&) -> std::unique_ptr<postproc::ExpectedLines> { return std::make_unique<Lines>(c.expected); },
         options, "p.gpp");
     for (const auto& line : c.produced) r.produced("OUT.NC", line, {});
-    if (c.produced.empty()) r.not_written("OUT.NC");
+    if (c.produced.empty()) {
+      r.not_written("OUT.NC");
+      r.keep_origins();
+    }
     r.finish();
     auto figures = r.parity();
     ASSERT_EQ(figures.size(), 1u);
@@ -159,6 +162,7 @@ TEST(RegressionComparer, ParityFigureAlignsTheLines) {
     EXPECT_EQ(figures[0].identical, c.identical);
     EXPECT_EQ(figures[0].first_difference, c.first_difference);
     EXPECT_EQ(figures[0].written, !c.produced.empty());
+    if (c.produced.empty()) EXPECT_EQ(r.diff_report(), "@@ OUT.NC: the run wrote no such file (2 lines expected) @@\n");
   }
 }
 
