@@ -155,6 +155,40 @@ TEST_F(EngineTest, DirectivesSplitTheOutput) {
 
 // What the PRP's filters find wrong with a command points at its header in the trace: an error
 // stops the run, a warning goes to the run's warnings.
+// A real trace's job values reach the post as SolidCAM gives them (docs/parity.md): user parameter
+// lines override the machine file's values, `on` is 1, the first drill cycle of the machine is 0,
+// and `{nb}` alone keeps the blank after its number.
+TEST_F(EngineTest, SolidCamTraceValuesReachThePost) {
+  const std::string vmid =
+      "<Machine><UserDefParams Name=\"\" Ver=\"2\"><MachineParams>"
+      "<Param GppName=\"bToolPreselect\" ValueType=\"1\" Value=\"0\"/>"
+      "<Param GppName=\"sWCM_MSG\" ValueType=\"2\" Value=\"from the machine\"/>"
+      "<Param GppName=\"iM8_Iterations\" ValueType=\"4\" Value=\"\" DefaultValue=\"3.000000\"/>"
+      "</MachineParams><MillParamsJobs><Param GppName=\"b832type\" ValueType=\"5\" Value=\"0\"/></MillParamsJobs>"
+      "</UserDefParams><MillDrilCycles><DrillCycle GppName=\"CYCLE81\" DrillType=\"0\"/>"
+      "<DrillCycle GppName=\"CYCLE83\" DrillType=\"2\"/></MillDrilCycles></Machine>";
+  const std::string gpp =
+      "@init_post\n  blknum_gen = TRUE\n  blknum = 10\n  blknum_delta = 10\n  integer_def_f = '1/2.0(p)'\nendp\n"
+      "@start_of_file\n  {nb, 'PRESELECT ', bToolPreselect, ' ', sWCM_MSG, ' ', iM8_Iterations}\nendp\n"
+      "@start_of_job\n  {nb, 'CYCLE832 ', b832type}\n  if flood_coolant eq 1\n    {nb, 'M', 8}\n  endif\n"
+      "  if mist_coolant eq 0 or mist_coolant eq 2\n    {nb, 'M', 9}\n  endif\n  {nb}\nendp\n"
+      "@drill\n  if drill_type eq CYCLE81\n    {nb, 'CYCLE81 G', 0}\n  endif\nendp\n";
+  const std::string trace =
+      "(1)@start_of_file   ==> program_number:1000 g_file_name:'P.MPF' \n"
+      "                    ..> iWorkOffset_Method : 0  bToolPreselect : 1  sWCM_MSG : Note: Ask your supervisor!  \n"
+      "(1)@start_of_job    ==> job_name:'D-drill' \n"
+      "                    ..> b832type : 1  sStopMessage :   iM1 : 0  \n"
+      "                    ..> flood_coolant:on mist_coolant:no_action \n"
+      "(1)@drill           ==> drill_depth:3.573 \n"
+      "                    ..> xpos:-112.7T ypos:-14.48T zpos:80.0T feed:132.6291T \n"
+      "                    ..> drill_type:0 d_drill_type:D_Drilling drill_cycle_name:'CYCLE81' \n"
+      "(1)@end_drill       ==> no parameters\n"
+      "(1)@end_of_file     ==> no parameters\n";
+  EXPECT_EQ(post(gpp, trace, vmid),
+            "\nN10 PRESELECT 1 Note: Ask your supervisor! 3\n"
+            "N20 CYCLE832 1\nN30 M8\nN40 M9\nN50 \nN60 CYCLE81 G0");
+}
+
 TEST_F(EngineTest, FilterErrorsAndWarningsNameTheTraceLine) {
   const std::string rapid = "(1)@rapid_move      ==> xpos:0 ypos:0 zpos:5\n";
   try {
