@@ -130,12 +130,12 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   assert(text.data() + text.size() == line_.data() + line_.size());
   std::size_t i = skip_blanks(text, 0);
   if (i == text.size()) return;
-  // SolidCAM's words for a command without parameters (`(1)@end_of_file     ==> no parameters`).
-  if (otherwise == TraceLine::Kind::Partial && trim_right(text.substr(i)) == "no parameters") return;
   Slots slots(out);
   PairName name = name_at(slots, used_parameters_, text, i);
   if (name.length == 0) {
     if (user_pair_name_length(text.substr(i)) > 0) return parse_user_pairs(out, text, i, column);
+    // SolidCAM's words for a command without parameters (`(1)@end_of_file     ==> no parameters`).
+    if (otherwise == TraceLine::Kind::Partial && trim_right(text.substr(i)) == "no parameters") return;
     // Free text: the whole remainder without the one separating blank.
     std::string_view kept = text.substr(text.front() == ' ' ? 1 : 0);
     out.trace.push_back({otherwise, std::string(otherwise == TraceLine::Kind::Partial ? kept : trim_right(kept))});

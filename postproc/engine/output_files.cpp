@@ -118,11 +118,25 @@ void OutputFiles::switch_to(std::size_t index) {
 }
 
 void OutputFiles::write_line(std::string_view line, bool after_break) {
-  if (after_break && !break_taken_) append(line_end_ == LineEnd::CRLF ? std::string_view("\r\n") : std::string_view("\n"));
+  const std::size_t eol = after_break && !break_taken_ ? (line_end_ == LineEnd::CRLF ? 2 : 1) : 0;
   break_taken_ = false;
-  if (line.empty()) return;
-  if (unwritten_slots_ > 0 && line.find('\x02') != std::string_view::npos) line = place_slots(line, slot_line_);
-  append(line);
+  if (unwritten_slots_ > 0 && line.find('\x02') != std::string_view::npos) {
+    append(std::string_view("\r\n").substr(2 - eol));  // placeholders are found by offset: the break first
+    append(place_slots(line, slot_line_));
+    return;
+  }
+  // The usual line: its break and its text in one copy.
+  const std::size_t n = eol + line.size();
+  entries_[current_].size += n;
+  if (buffered_ + n > buffer_.size()) {
+    drain();
+    if (n > buffer_.size()) buffer_.resize(n);
+  }
+  char* out = buffer_.data() + buffered_;
+  if (eol == 2) *out++ = '\r';
+  if (eol > 0) *out++ = '\n';
+  if (!line.empty()) std::memcpy(out, line.data(), line.size());
+  buffered_ += n;
 }
 
 void OutputFiles::append(std::string_view bytes) {
