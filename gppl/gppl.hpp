@@ -98,6 +98,18 @@ bool uses_line_functions(const Program& program);
 // Warnings found while compiling (implicit host variables, ...), "file:line:col: warning: text".
 const std::vector<std::string>& warnings(const Program& program);
 
+// The procedures a post defines, in the order written, and whether a `call` statement names them.
+struct ProcedureInfo {
+  std::string_view name;  // "@rapid_move", as written
+  Position position;      // of the name in its header
+  bool called = false;
+};
+std::vector<ProcedureInfo> procedures(const Program& program);
+
+// Of `candidates`, the one nearest to `name` (case-insensitive edit distance), for a "did you mean"
+// hint: empty when none is within 2 edits, or within a third of the name's length for short names.
+std::string_view nearest_name(std::string_view name, std::span<const std::string_view> candidates);
+
 // Where finished NC lines go. `origin` tells which procedure and source line started the line
 // (for `postproc explain` and for naming the procedure in regression diffs).
 struct LineOrigin {

@@ -33,6 +33,46 @@ std::shared_ptr<const Program> compile_source(std::string_view text, const std::
 
 const std::vector<std::string>& warnings(const Program& program) { return program.warnings; }
 
+std::vector<ProcedureInfo> procedures(const Program& program) {
+  std::vector<ProcedureInfo> out;
+  for (const Procedure& p : program.procedures)
+    if (p.defined) out.push_back({p.name, program.position(p.pos), p.called});
+  return out;
+}
+
+std::string_view nearest_name(std::string_view name, std::span<const std::string_view> candidates) {
+  auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; };
+  // Edit distance with transpositions (a swapped pair is one mistake: mvoe for move), one row each.
+  auto distance = [&](std::string_view a, std::string_view b) {
+    std::vector<std::size_t> before(b.size() + 1), row(b.size() + 1), next(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+      next[0] = i;
+      for (std::size_t j = 1; j <= b.size(); ++j) {
+        const bool same = lower(a[i - 1]) == lower(b[j - 1]);
+        next[j] = std::min({row[j] + 1, next[j - 1] + 1, row[j - 1] + (same ? 0 : 1)});
+        if (i > 1 && j > 1 && lower(a[i - 1]) == lower(b[j - 2]) && lower(a[i - 2]) == lower(b[j - 1]))
+          next[j] = std::min(next[j], before[j - 2] + 1);
+      }
+      before.swap(row);
+      row.swap(next);
+    }
+    return row[b.size()];
+  };
+  const std::size_t limit = std::min<std::size_t>(2, std::max<std::size_t>(1, name.size() / 3));
+  std::string_view best;
+  std::size_t best_distance = limit + 1;
+  for (std::string_view c : candidates) {
+    if (c.size() + limit < name.size() || name.size() + limit < c.size()) continue;
+    const std::size_t d = distance(name, c);
+    if (d > 0 && d < best_distance) {
+      best = c;
+      best_distance = d;
+    }
+  }
+  return best;
+}
+
 Interpreter::Interpreter(std::shared_ptr<const Program> program, OutputSink& sink) {
   if (!program) throw std::invalid_argument("gppl::Interpreter needs a compiled program");
   state_ = std::make_unique<State>(std::move(program), sink);

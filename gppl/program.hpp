@@ -120,6 +120,7 @@ struct Procedure {
   std::vector<LocalVariable> locals;
   std::uint32_t frame_size = 0;
   bool defined = true;  // false: referenced by `call` only (error reported at load time)
+  bool called = false;  // a `call` statement names it
 };
 
 // An `input` statement. Runs are not interactive: the host's answers are matched by the name of

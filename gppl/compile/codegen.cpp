@@ -144,7 +144,8 @@ void Compiler::compile_line(const ParsedLine& line, Context& ctx, std::vector<Bl
         error(ErrorCode::DoesNotExist, node_pos(name, ctx.file), name.string_view(), "no procedure of that name");
         break;
       }
-      const Procedure& callee = program_->procedures[it->second];
+      Procedure& callee = program_->procedures[it->second];
+      callee.called = true;
       std::vector<std::uint32_t> args;
       if (st.children.size() > 1) {
         for (const auto& arg : st.children[1]->children) {

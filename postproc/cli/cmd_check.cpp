@@ -9,6 +9,7 @@
 #include "gppl/gppl.hpp"
 #include "postproc/cli/cli.hpp"
 #include "postproc/cli/cli_support.hpp"
+#include "postproc/engine/command_names.hpp"
 #include "postproc/engine/enumerations.hpp"
 #include "postproc/engine/host_variables.hpp"
 #include "prp/prp.hpp"
@@ -35,6 +36,20 @@ std::size_t check_prp(const std::string& path, prp::Units units, std::ostream& o
   }
 }
 
+// A procedure that no command has and no `call` names never runs: usually a misspelled command
+// (`@rapid_mvoe`), whose commands would then be lost. A warning with the nearest command name.
+void warn_unused_procedures(const gppl::Program& program, std::ostream& out) {
+  const auto commands = stream_command_names();
+  for (const auto& p : gppl::procedures(program)) {
+    if (p.called || is_stream_command_name(p.name)) continue;
+    std::string message = fmt::format("{}:{}:{}: warning: {}: not a command and never called", p.position.file,
+                                      p.position.line, p.position.column, p.name);
+    if (std::string_view guess = gppl::nearest_name(p.name, commands); !guess.empty())
+      message += fmt::format("; did you mean {}?", guess);
+    out << message << '\n';
+  }
+}
+
 std::size_t check_gpp(const std::string& path, const prp::MachineParameters& machine, const Arguments& args,
                       std::ostream& out) {
   std::vector<std::string> cycles;
@@ -51,6 +66,7 @@ std::size_t check_gpp(const std::string& path, const prp::MachineParameters& mac
   try {
     auto program = gppl::compile_file(path, options);
     for (const auto& w : gppl::warnings(*program)) out << w << '\n';
+    warn_unused_procedures(*program, out);
     return 0;
   } catch (const gppl::Errors& e) {
     for (const auto& one : e.all()) out << one.what() << '\n';

@@ -15,6 +15,7 @@
 #include "gppl/compile/system_variables.hpp"
 #include "postproc/engine/directive.hpp"
 #include "postproc/engine/engine_sink.hpp"
+#include "postproc/engine/command_names.hpp"
 #include "postproc/engine/enumerations.hpp"
 #include "postproc/engine/host_variables.hpp"
 #include "postproc/engine/line_numbers.hpp"
@@ -100,6 +101,7 @@ public:
         enums_(engine.drill_cycle_names()),
         sink_(files, options.observer),
         uses_line_functions_(gppl::uses_line_functions(*program)),
+        procedures_(gppl::procedures(*program)),
         interpreter_(std::move(program), sink_),
         binding_(interpreter_, enums_),
         line_numbers_(interpreter_, files, options.observer, [this] {
@@ -154,6 +156,7 @@ public:
     toolpath::LookaheadSource first(checked);
     summary.units = engine_.options().units.value_or(job_units(first.peek()));
     machine_ = &engine_.machine(summary.units);
+    refuse_procedures_without_calls();
     toolpath::PrefetchSource read_ahead(first);
     auto filtered = prp::build_filter_chain(*machine_, read_ahead, [&](const toolpath::Command& c, const std::string& m) {
       warnings(c.line, fmt::format("command #{} {}: {}", c.index, c.name, m));
@@ -180,6 +183,7 @@ public:
       if (options_.progress && (summary.commands & 4095) == 0) options_.progress(summary.commands);
     }
     sink_.end_commands();
+    warn_unhandled(warnings);
     guarded([&] { interpreter_.finish(); });
     if (uses_line_functions_) guarded([&] { line_numbers_.finish(); });
     auto print_file_size = interpreter_.find_variable("print_file_size");
@@ -200,6 +204,12 @@ private:
     bool calls_subroutine = false;
     bool drill = false;
     bool structural = false;  // ProgramStructure::before() has something to do
+    bool motion = false;      // @rapid_move, @line, @arc: without a procedure the moves are lost
+    // Commands of this name the post had no procedure for, the first one's line, and whether any
+    // came at a depth other than 0 (a trace's depth 0: SolidCAM's own post had none either).
+    std::size_t unhandled = 0;
+    std::uint32_t first_unhandled_line = 0;
+    bool unhandled_expected_handled = false;
   };
 
   template <class F>
@@ -256,6 +266,7 @@ private:
       made.calls_subroutine = ProgramStructure::calls_subroutine(probe);
       made.drill = iequals(name, "@drill");
       made.structural = ProgramStructure::concerns(probe);
+      made.motion = is_basic_motion(name);
       it = commands_.emplace(std::string(name), std::move(made)).first;
     }
     std::move_backward(recent_.begin(), recent_.end() - 1, recent_.end());
@@ -300,6 +311,9 @@ private:
     }
 
     if (!command_info.procedure) {
+      if (command_info.motion) fail(missing_motion(command.name));
+      if (command_info.unhandled++ == 0) command_info.first_unhandled_line = command.line;
+      if (command.depth != 0 && !is_informational(command.name)) command_info.unhandled_expected_handled = true;
       ++summary.skipped;
       if (uses_line_functions_) line_numbers_.command_without_procedure(command.name);
       interpreter_.trace_unhandled(command.name);
@@ -309,13 +323,71 @@ private:
     if (reset && command_info.calls_subroutine) interpreter_.reset_change_memory();
   }
 
+  // gen_procs = Y (or C) makes the jobs subroutines: @proc .. @end_proc bodies after the main program,
+  // @call_proc where they were. A post with neither procedure would write every job's moves after
+  // the program's end (M30): stop before anything is written.
+  void refuse_procedures_without_calls() const {
+    const std::string& g = machine_->text("gen_procs");
+    if (!iequals(g, "Y") && !iequals(g, "C")) return;
+    if (interpreter_.find_procedure("@proc") || interpreter_.find_procedure("@call_proc")) return;
+    throw RunError(fmt::format(
+        "{}: the PRP says gen_procs = {}: the jobs become subroutines (@proc .. @end_proc after the main "
+        "program, @call_proc where they were), but the post has neither @proc nor @call_proc, so every job's "
+        "moves would come after the end of the program; give the post those procedures, or set gen_procs = N",
+        engine_.options().prp.empty() ? options_.input_name : engine_.options().prp, g));
+  }
+
+  // The post's procedures that neither a job sends nor a `call` names: a misspelled command name
+  // (`@rapid_mvoe`) is among them. The one nearest to `name`, or empty.
+  std::string misspelling_of(std::string_view name) const {
+    std::vector<std::string_view> unused;
+    for (const auto& p : procedures_)
+      if (!p.called && !is_stream_command_name(p.name)) unused.push_back(p.name);
+    return std::string(gppl::nearest_name(name, unused));
+  }
+
+  std::string missing_motion(std::string_view name) const {
+    std::string message = fmt::format("the post has no {} procedure, so these moves would be missing from the NC "
+                                      "program", name);
+    if (std::string guess = misspelling_of(name); !guess.empty())
+      message += fmt::format(" (the post defines {}, which no command has and nothing calls: a misspelling?)", guess);
+    return message;
+  }
+
+  // After the run: one warning for each command name the post had no procedure for, unless the
+  // trace says SolidCAM's post had none either (depth 0) or the command only informs (@def_tool).
+  void warn_unhandled(StreamWarnings& warnings) const {
+    std::vector<std::pair<const std::string*, const CommandInfo*>> kinds;
+    for (const auto& [name, info] : commands_)
+      if (info.unhandled > 0 && info.unhandled_expected_handled) kinds.emplace_back(&name, &info);
+    std::sort(kinds.begin(), kinds.end(),
+              [](const auto& a, const auto& b) { return a.second->first_unhandled_line < b.second->first_unhandled_line; });
+    for (const auto& [name, info] : kinds) {
+      std::string message = info->unhandled == 1
+                                ? fmt::format("{}: the post has no procedure for it, so this command was not posted", *name)
+                                : fmt::format("{}: the post has no procedure for it, so its {} commands were not posted",
+                                              *name, info->unhandled);
+      if (std::string guess = misspelling_of(*name); !guess.empty())
+        message += fmt::format(" (the post defines {}, which no command has and nothing calls: a misspelling?)", guess);
+      warnings(info->first_unhandled_line, message);
+    }
+  }
+
   // System variables the run knows before the job says anything (docs/system-variables.md, source
   // "run"); a command of the job that carries one assigns it again, so the trace wins.
+  // The paths are written with backslashes, as SolidCAM gives them: posts take the name out of a
+  // path by looking for the last `\\` (the Siemens 828D post: `right(part_model_name,
+  // instr(rev(part_model_name), '\\') - 1)`, error 387 for a path without one).
   void fill_run_values() {
     const std::filesystem::path job(options_.input_name);
+    auto windows = [](std::string path) {
+      std::replace(path.begin(), path.end(), '/', '\\');
+      return path;
+    };
     set_string(interpreter_.find_variable("part_name"), input_stem());
-    set_string(interpreter_.find_variable("part_full_name"), (job.parent_path() / job.stem()).string());
-    set_string(interpreter_.find_variable("path_part"), job.parent_path().string());
+    set_string(interpreter_.find_variable("part_full_name"), windows((job.parent_path() / job.stem()).string()));
+    set_string(interpreter_.find_variable("part_model_name"), windows(job.string()));
+    set_string(interpreter_.find_variable("path_part"), windows(job.parent_path().string()));
     set_string(interpreter_.find_variable("pre_processor"), std::filesystem::path(engine_.options().post).stem().string());
   }
 
@@ -364,6 +436,7 @@ private:
   Enumerations enums_;
   EngineSink sink_;
   bool uses_line_functions_;
+  std::vector<gppl::ProcedureInfo> procedures_;  // the post's, for "a misspelling?" hints
   gppl::Interpreter interpreter_;
   ParameterBinding binding_;
   LineNumbers line_numbers_;

@@ -55,3 +55,36 @@ TEST(Declarations, GlobalOfSystemNameIsTheSystemVariable) {
 }
 
 }  // namespace
+
+namespace {
+
+// What the engine needs for its "a misspelling?" hints: the post's procedures, whether a `call`
+// names them, and the nearest of a list of names.
+TEST(Procedures, NamedAndCalled) {
+  auto program = gppl::compile_source("@line\n  call @helper\nendp\n@helper\nendp\n@rapid_mvoe\nendp\n", "p.gpp", {});
+  auto procs = gppl::procedures(*program);
+  ASSERT_EQ(procs.size(), 3u);
+  EXPECT_EQ(procs[0].name, "@line");
+  EXPECT_FALSE(procs[0].called);
+  EXPECT_EQ(procs[1].name, "@helper");
+  EXPECT_TRUE(procs[1].called);
+  EXPECT_EQ(procs[2].position.line, 6);
+}
+
+TEST(Procedures, NearestName) {
+  const std::string_view names[] = {"@rapid_mvoe", "@lien", "@usr_header", "@arc"};
+  struct Case {
+    const char* name;
+    const char* nearest;
+  } cases[] = {
+      {"@rapid_move", "@rapid_mvoe"},  // a swapped pair is one edit
+      {"@line", "@lien"},
+      {"@LINE", "@lien"},              // case does not count
+      {"@drill", ""},                  // nothing close
+      {"@arc", ""},                    // the same name is no hint
+      {"@ar", "@arc"},
+  };
+  for (const Case& c : cases) EXPECT_EQ(gppl::nearest_name(c.name, names), c.nearest) << c.name;
+}
+
+}  // namespace

@@ -87,7 +87,7 @@ TEST_F(Names, JobNamesAreDefined) {
 TEST_F(Names, MachineUserParametersAreDefined) {
   const std::string job = write("job.trace", kJob);
   const std::string prp = write("p.prp", "@pre_processor\noptions = CLAMP_DELAY NUMERIC\nendp\n");
-  const std::string post = write("p.gpp", "@start_of_file\n  clamp_delay = 2.5\n  {nb, 'delay ', clamp_delay}\nendp\n");
+  const std::string post = write("p.gpp", "@start_of_file\n  clamp_delay = 2.5\n  {nb, 'delay ', clamp_delay}\nendp\n@line\nendp\n");
   auto checked = run_cli({"check", "-q", "--prp", prp, post});
   EXPECT_EQ(checked.code, 0) << checked.out;
   auto ran = run_cli({"run", "-q", "--post", post, "--prp", prp, job});
@@ -104,6 +104,19 @@ TEST_F(Names, RunFillsWhatItKnows) {
   auto ran = run_cli({"run", "-q", "--post", post, job});
   EXPECT_EQ(ran.code, 0) << ran.err;
   EXPECT_EQ(ran.out, "\npart7 fill \npart7\nFROM-TRACE");
+}
+
+// The paths the run fills look like SolidCAM's, with backslashes, so that posts which cut the name
+// out at the last `\` (SolidCAM's Siemens 828D post) find it.
+TEST_F(Names, RunPathsHaveBackslashes) {
+  const std::string post = write("paths.gpp",
+                                 "@start_of_file\n  local integer i\n  i = instr(rev(part_model_name), '\\\\')\n"
+                                 "  {nb, right(part_model_name, i - 1), ' ', right(part_full_name, instr(rev(part_full_name), '\\\\') - 1)}\nendp\n"
+                                 "@line\nendp\n");
+  const std::string job = write("part7.trace", kJob);
+  auto ran = run_cli({"run", "-q", "--post", post, job});
+  EXPECT_EQ(ran.code, 0) << ran.err;
+  EXPECT_EQ(ran.out, "\npart7.trace part7");
 }
 
 // An inferred type gives way to the job's value: `stock_type` is guessed numeric, the trace sends text.

@@ -23,6 +23,7 @@ const std::string kJob = "../docs/examples/sample-job.trace";
 // A post that writes lines for a while, then fails at the first arc (division by zero).
 constexpr const char* kFailingPost =
     "@start_of_file\n  {nl, '%'}\nendp\n"
+    "@rapid_move\n  {nl, 'G0 X', xpos}\nendp\n"
     "@line\n  {nl, 'G1 X', xpos}\nendp\n"
     "@arc\n  local numeric z\n  z = 0\n  z = xpos / z\n  {nl, 'G2 X', z}\nendp\n";
 

@@ -189,23 +189,63 @@ TEST_F(EngineTest, SolidCamTraceValuesReachThePost) {
             "N20 CYCLE832 1\nN30 M8\nN40 M9\nN50 \nN60 CYCLE81 G0");
 }
 
+// A post writer's mistakes are not silent (issue 21): a motion command without a procedure stops the
+// run, naming the misspelled procedure the post defines instead; another command kind without one
+// is a warning at its first command, unless it only informs or SolidCAM's trace shows its own post
+// had none either (depth 0).
+TEST_F(EngineTest, CommandsWithoutAProcedureAreNamed) {
+  const std::string job = "@def_tool\ntool_number : 1\n@def_tool\ntool_number : 2\n@rapid_move\nxpos : 0\nypos : 0\nzpos : 5\n"
+                          "@delay\ndwell_time : 2\n@delay\ndwell_time : 3\n";
+  try {
+    post("@rapid_mvoe\n  {nl, 'G0'}\nendp\n", job);
+    ADD_FAILURE() << "no error";
+  } catch (const postproc::RunError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "job.trace:5:1: command #2 @rapid_move: the post has no @rapid_move procedure, so these moves would be "
+              "missing from the NC program (the post defines @rapid_mvoe, which no command has and nothing calls: a "
+              "misspelling?)");
+  }
+  EXPECT_EQ(post("@rapid_move\n  {nl, 'G0'}\nendp\n", job), "\nG0");
+  EXPECT_EQ(warnings.str(), "job.trace:9:1: warning: @delay: the post has no procedure for it, so its 2 commands were not posted\n");
+  warnings.str("");
+  EXPECT_EQ(post("@rapid_move\nendp\n@dealy\nendp\n", "(1)@rapid_move      ==> xpos:0 ypos:0 zpos:5\n(1)@delay           ==> dwell_time:2\n"
+                 "(0)@tool_path_info  ==> tool_path_type:'start_approach'\n"), "");
+  EXPECT_EQ(warnings.str(), "job.trace:2:1: warning: @delay: the post has no procedure for it, so this command was not "
+                            "posted (the post defines @dealy, which no command has and nothing calls: a misspelling?)\n");
+}
+
+// gen_procs = Y with a post that has neither @proc nor @call_proc would put every job after M30.
+TEST_F(EngineTest, ProceduresWithoutCallsAreRefused) {
+  const std::string gpp = "@rapid_move\nendp\n@line\n  {nl, 'G1'}\nendp\n@end_of_file\n  {nl, 'M30'}\nendp\n";
+  const std::string job = "@start_of_file\n@start_of_job\n@line\nxpos : 1\nypos : 0\nzpos : 0\nfeed : 100\n@end_of_job\n@end_of_file\n";
+  try {
+    post(gpp, job, "@pre_processor\n  gen_procs = Y\nendp\n");
+    ADD_FAILURE() << "no error";
+  } catch (const postproc::RunError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("p.prp: the PRP says gen_procs = Y"), std::string::npos) << what;
+    EXPECT_NE(what.find("neither @proc nor @call_proc"), std::string::npos) << what;
+  }
+  EXPECT_EQ(post(gpp, job, "@pre_processor\n  gen_procs = N\nendp\n"), "\nG1\nM30");
+}
+
 TEST_F(EngineTest, FilterErrorsAndWarningsNameTheTraceLine) {
   const std::string rapid = "(1)@rapid_move      ==> xpos:0 ypos:0 zpos:5\n";
   try {
-    post("@arc\n  {nl, 'arc'}\nendp\n",
+    post("@rapid_move\nendp\n@arc\n  {nl, 'arc'}\nendp\n",
          rapid + "(1)@arc             ==> xpos:1 ypos:1 zpos:0 feed:100 arc_direction:cw arc_plane:qq xcenter:0 ycenter:1\n",
          "@pre_processor\n  arc_quadrants = Y\nendp\n");
     ADD_FAILURE() << "no error";
   } catch (const toolpath::InputError& e) {
     EXPECT_EQ(std::string(e.what()), "job.trace:2:1: command #1 @arc: arc_plane `qq` is none of XY, YZ, ZX");
   }
-  EXPECT_EQ(post("@loop\nendp\n", rapid + "(1)@loop            ==> label:1 loop_count:2\n(1)@end_loop\n", "@pre_processor\n  loop_exist = N\nendp\n"), "");
+  EXPECT_EQ(post("@rapid_move\nendp\n@loop\nendp\n@end_loop\nendp\n", rapid + "(1)@loop            ==> label:1 loop_count:2\n(1)@end_loop\n", "@pre_processor\n  loop_exist = N\nendp\n"), "");
   EXPECT_EQ(warnings.str(), "job.trace:2:1: warning: command #1 @loop: @loop although the PRP says loop_exist = N\n");
 }
 
 TEST_F(EngineTest, ErrorsNameTheCommandAndLeaveOldFilesAlone) {
   std::ofstream(dir / "OUT.NC") << "old\n";
-  std::ofstream(dir / "p.gpp") << "@line\n  {nl, 'x'}\n  gcode = 1 / 0\nendp\n";
+  std::ofstream(dir / "p.gpp") << "@line\n  {nl, 'x'}\n  gcode = 1 / 0\nendp\n@rapid_move\nendp\n";
   postproc::EngineOptions engine_options;
   engine_options.post = (dir / "p.gpp").string();
   postproc::Engine engine(engine_options);
