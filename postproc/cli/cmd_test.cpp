@@ -190,6 +190,14 @@ int run_test(const Arguments& args, std::ostream& out, std::ostream& err) {
     out << report;
     return kBadInput;
   }
+  if (comparer.lines_compared() == 0) {
+    // A green test with nothing behind it is worse than a red one.
+    std::string written;
+    for (const auto& s : comparer.unmatched_streams()) written += (written.empty() ? "" : ", ") + s;
+    out << fmt::format("nothing was compared: {} holds no golden file for the output ({})\n",
+                       expect.empty() ? input.path : expect, written.empty() ? "no lines" : written);
+    return kBadInput;
+  }
   if (!quiet) {
     out << fmt::format("ok: {} lines match", comparer.lines_compared());
     for (const auto& s : comparer.unmatched_streams()) out << fmt::format("; {} not compared (no golden file)", s);

@@ -1,5 +1,6 @@
 // The command line: dispatch, help, exit codes, and `read` printing a stream that reads back the same.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -40,6 +41,19 @@ TEST(Cli, ExitCodes) {
     EXPECT_EQ(r.code, c.code) << r.err;
     EXPECT_NE(r.err.find(c.err_contains), std::string::npos) << r.err;
   }
+}
+
+// `test` with nothing to compare is a failure, not "ok: 0 lines match" (a green CI with no test).
+TEST(Cli, TestWithNothingComparedFails) {
+  const auto empty = std::filesystem::temp_directory_path() / ("postproc-empty-golden-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(empty);
+  auto r = run({"test", "golden/solidcam-fanuc/toolpath.trace", "--post", "golden/solidcam-fanuc/fanuc.gpp", "--prp",
+                "golden/solidcam-fanuc/fanuc.prp", "--expect", empty.string() + "/", "-q"});
+  std::filesystem::remove_all(empty);
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("nothing was compared: " + empty.string() + "/ holds no golden file for the output (OUT.TAP)"),
+            std::string::npos)
+      << r.out;
 }
 
 // Every subcommand: a wrong command line is exit code 2 with a message naming the command; a
