@@ -327,6 +327,16 @@ std::uint32_t Compiler::call_node(const SyntaxNode& n, Context& ctx) {
   return std::uint32_t(program_->nodes.size() - 1);
 }
 
+// "did you mean 'xpos'?" for a name nothing declares: the nearest local, global or system variable.
+std::string Compiler::did_you_mean(std::string_view name, const Context& ctx) const {
+  std::vector<std::string_view> names;
+  for (const auto& local : program_->procedures[ctx.procedure].locals) names.push_back(local.name);
+  for (const auto& g : program_->globals)
+    if (g.group != Group::Implicit) names.push_back(g.name);
+  const std::string_view guess = nearest_name(name, names);
+  return guess.empty() ? std::string() : fmt::format("did you mean '{}'?", guess);
+}
+
 std::uint32_t Compiler::reference(const SyntaxNode& variable, Context& ctx, bool target) {
   const SyntaxNode& id = *variable.children[0];
   const std::string_view name = id.string_view();
@@ -370,7 +380,7 @@ std::uint32_t Compiler::reference(const SyntaxNode& variable, Context& ctx, bool
         warn(pos, fmt::format("'{}' is not declared: treated as a host variable", name));
     }
   } else {
-    error(target ? ErrorCode::DoesNotExist : ErrorCode::NotDefined, pos, name);
+    error(target ? ErrorCode::DoesNotExist : ErrorCode::NotDefined, pos, name, did_you_mean(name, ctx));
   }
   if (!ref.local) dims = &program_->globals[ref.id].dimensions;
   // Counted now: an index expression may declare an implicit global, moving the globals (and dims).

@@ -74,7 +74,8 @@ void Interpreter::State::new_block(SourcePos pos) {
   Cell& number = globals[program.slots.blknum];
   const std::int64_t n = number.value.integer;
   const std::int64_t max = globals[program.slots.blknum_max].value.integer;
-  if (n > max) fail_at(pos, ErrorCode::BlockNumberTooBig, {}, fmt::format("blknum {} is above blknum_max {}", n, max));
+  if (n > max) fail_at(pos, ErrorCode::BlockNumberTooBig, {}, fmt::format("blknum {} is above blknum_max {}: raise blknum_max in @init_post, "
+                                                                              "or set blknum back when it gets there", n, max));
   line += globals[program.slots.blknum_letter].value.text;
   const std::string& spec = globals[program.slots.blknum_f].value.text;
   const DisplayFormat& f = cached(format_sites[program.format_sites + 2],

@@ -109,6 +109,24 @@ TEST(LoadErrors, UndefinedNamesWhenHostListsAll) {
   EXPECT_EQ(compile_error("@t\nactive(b) = 1\nendp\n", strict), "2:8: error 404");
 }
 
+// A name nothing declares gets the nearest declared, local or system name as a hint.
+TEST(LoadErrors, UndefinedNamesSuggestTheNearest) {
+  gppl::CompileOptions strict;
+  strict.implicit_host_variables = false;
+  auto message = [&](const std::string& source) {
+    try {
+      gppl::compile_source(source, "e.gpp", strict);
+    } catch (const gppl::Errors& e) {
+      return std::string(e.all().front().what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("@t\n{nb, xpso}\nendp\n"), "e.gpp:2:6: error 383: Variable 'xpso' is not defined: did you mean 'xpos'?");
+  EXPECT_EQ(message("@t\nlocal numeric depth\ndepht = 2\nendp\n"),
+            "e.gpp:3:1: error 404: Symbol 'depht' does not exist: did you mean 'depth'?");
+  EXPECT_EQ(message("@t\nqqqq = 2\nendp\n"), "e.gpp:2:1: error 404: Symbol 'qqqq' does not exist");
+}
+
 TEST(LoadErrors, CollectsEveryError) {
   try {
     gppl::compile_source("@t\nif a\nx =\n{nb\nendp\nstray\n", "e.gpp", {});
