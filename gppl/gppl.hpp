@@ -84,6 +84,10 @@ struct CompileOptions {
   bool undeclared_from_job = false;
   // Where `include`/`inc` files are looked up besides the including file's folder.
   std::vector<std::string> include_paths;
+  // `postproc check`: an assignment of a constant is checked at its own line, as a run would check
+  // it when the line runs: a display format into a format variable (`xpos_f = '5.3p'`: error 423,
+  // with the spelling meant), a number into a text variable (394), text into a number (386).
+  bool check_constant_assignments = false;
 };
 
 class Program;  // parsed, resolved, immutable; shareable between interpreters

@@ -76,7 +76,9 @@ void Compiler::compile_line(const ParsedLine& line, Context& ctx, std::vector<Bl
       const VarRef& r = program_->refs[ref];
       if (!r.local && program_->globals[r.id].read_only)
         error(ErrorCode::ReadOnly, node_pos(*st.children[0], ctx.file), program_->globals[r.id].name);
-      emit(OpCode::Assign, pos, ref, expression(*st.children[1], ctx));
+      const std::uint32_t value = expression(*st.children[1], ctx);
+      if (options_.check_constant_assignments && !r.local) check_constant(program_->globals[r.id], value);
+      emit(OpCode::Assign, pos, ref, value);
       break;
     }
     case LineKind::AttrAssignment: {
@@ -325,6 +327,42 @@ std::uint32_t Compiler::call_node(const SyntaxNode& n, Context& ctx) {
   program_->lists.insert(program_->lists.end(), args.begin(), args.end());
   program_->nodes.push_back(node);
   return std::uint32_t(program_->nodes.size() - 1);
+}
+
+// A constant assigned to a global, checked as the run would check it (CompileOptions::
+// check_constant_assignments). A format variable is a text variable whose name ends in `_f`.
+void Compiler::check_constant(const GlobalVariable& target, std::uint32_t value) {
+  const Node& node = program_->nodes[value];
+  if (node.kind != NodeKind::Constant || !target.typed || target.group == Group::Implicit) return;
+  const Value& v = program_->constants[node.a];
+  const bool text = v.type == Type::String;
+  if (target.type == Type::String && !text) {
+    error(ErrorCode::NotString, node.pos, target.name, "a number assigned to a text variable");
+    return;
+  }
+  if ((target.type == Type::Numeric || target.type == Type::Integer) && text) {
+    error(ErrorCode::NotNumeric, node.pos, target.name, "text assigned to a number variable");
+    return;
+  }
+  const std::string& name = target.name;
+  const bool format = name.size() > 2 && lower(name.substr(name.size() - 2)) == "_f";
+  if (target.type != Type::String || !text || !format) return;
+  try {
+    parse_display_format(v.text);
+  } catch (const Error& e) {
+    // Option letters written without their parentheses ('5.3p' for '5.3(p)') are the usual slip.
+    std::string hint;
+    const std::size_t at = v.text.find_first_of("pPdDnNiI*/", v.text.find('.'));
+    if (v.text.find('.') != std::string::npos && at != std::string::npos && v.text.find('(') == std::string::npos) {
+      std::string meant = v.text.substr(0, at) + "(" + v.text.substr(at) + ")";
+      try {
+        parse_display_format(meant);
+        hint = fmt::format("; did you mean '{}'?", meant);
+      } catch (const Error&) {
+      }
+    }
+    errors_.push_back(Error(e.number(), program_->position(node.pos), e.text() + " (the display format of " + name + ")" + hint));
+  }
 }
 
 // "did you mean 'xpos'?" for a name nothing declares: the nearest local, global or system variable.

@@ -68,6 +68,7 @@ private:
   std::uint32_t call_node(const SyntaxNode& n, Context& ctx);
   std::uint32_t reference(const SyntaxNode& variable, Context& ctx, bool target);
   std::string did_you_mean(std::string_view name, const Context& ctx) const;
+  void check_constant(const GlobalVariable& target, std::uint32_t value);
   void generate(const SyntaxNode& n, Context& ctx, SourcePos pos);
   // codegen_extensions.cpp: what real posts use beyond the manual (input, print, elseif, adims...)
   void input_statement(const SyntaxNode& st, Context& ctx, SourcePos pos);

@@ -62,6 +62,7 @@ std::size_t check_gpp(const std::string& path, const prp::MachineParameters& mac
     for (auto& v : job_variables(*job.reader)) options.host_variables.push_back(std::move(v));
   }
   options.implicit_host_variables = false;  // every name must be declared: typos are errors here
+  options.check_constant_assignments = true;
   if (args.has("--include")) options.include_paths.push_back(args.value("--include"));
   try {
     auto program = gppl::compile_file(path, options);

@@ -7,7 +7,7 @@
 namespace postproc {
 namespace {
 
-constexpr std::array<std::string_view, 90> kNames = {
+constexpr std::array<std::string_view, 94> kNames = {
     // gpptool-commands.md
     "@absolute_mode", "@arc", "@arc4x_cartesian", "@arc4x_polar", "@arc_5x", "@call_prms", "@call_proc",
     "@change_ref_point", "@change_tool", "@change_wire", "@chng_tool_cnext", "@compensation", "@def_tool",
@@ -24,6 +24,8 @@ constexpr std::array<std::string_view, 90> kNames = {
     "@wc_move", "@wc_program_plane",
     // what SolidCAM's level-5 traces send besides (the AG_BIG_SABET job of catinrage/achar)
     "@job_plane", "@offset_change", "@setup", "@tool_breakage", "@vmid_info",
+    // procedures SolidCAM's own Siemens posts define for commands the manual does not list
+    "@arc_yz", "@arc_zx", "@loop_matrix_info", "@transform_info",
     // run by the engine itself
     "@init_inc", "@init_post",
     // the controller models' streams (postproc read --dialect)

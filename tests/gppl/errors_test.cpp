@@ -127,6 +127,38 @@ TEST(LoadErrors, UndefinedNamesSuggestTheNearest) {
   EXPECT_EQ(message("@t\nqqqq = 2\nendp\n"), "e.gpp:2:1: error 404: Symbol 'qqqq' does not exist");
 }
 
+// `check` (check_constant_assignments) checks an assignment of a constant at its line, as the run
+// would when the line runs; a run still compiles such a post and stops only if the line runs.
+TEST(LoadErrors, ConstantAssignmentsAreCheckedWhereTheyStand) {
+  gppl::CompileOptions checking;
+  checking.check_constant_assignments = true;
+  struct Case {
+    const char* source;
+    const char* error;
+  } cases[] = {
+      {"@t\nxpos_f = '5.3p'\nendp\n",
+       "e.gpp:2:10: error 423: Format: Invalid format option, unexpected 'p' in '5.3p' (the display format of xpos_f); "
+       "did you mean '5.3(p)'?"},
+      {"@t\nfeed_f = '4.1 d'\nendp\n",
+       "e.gpp:2:10: error 423: Format: Invalid format option, unexpected 'd' in '4.1 d' (the display format of feed_f); "
+       "did you mean '4.1 (d)'?"},
+      {"@t\nzpos_f = '5'\nendp\n", "e.gpp:2:10: error 421: Format: No decimal point in '5' (the display format of zpos_f)"},
+      {"@t\nfeed_f = 5.0\nendp\n", "e.gpp:2:10: error 394: Variable 'feed_f' is not string variable: a number assigned to a text variable"},
+      {"@t\ngcode = 'G1'\nendp\n", "e.gpp:2:9: error 386: Variable 'gcode' is not numeric: text assigned to a number variable"},
+      {"@t\nxpos_f = '5.3(p)'\ngcode = 1\nfeed_f = '4.1' + 'z'\nendp\n", "no error"},
+  };
+  for (const Case& c : cases) {
+    std::string got = "no error";
+    try {
+      gppl::compile_source(c.source, "e.gpp", checking);
+    } catch (const gppl::Errors& e) {
+      got = e.all().front().what();
+    }
+    EXPECT_EQ(got, c.error) << c.source;
+    EXPECT_EQ(compile_error(c.source), "no error") << "a run compiles it: " << c.source;
+  }
+}
+
 TEST(LoadErrors, CollectsEveryError) {
   try {
     gppl::compile_source("@t\nif a\nx =\n{nb\nendp\nstray\n", "e.gpp", {});
