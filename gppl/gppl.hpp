@@ -226,6 +226,9 @@ public:
 
   // Trace output (`trace "list":level` statements) goes here; nullptr (default) discards it.
   void set_trace_stream(std::ostream* trace);
+  // Traces every procedure at `level` (0..5), as `trace "all":level` does; later trace statements
+  // of the post still apply.
+  void trace_all(int level);
   // The run log: `print` messages and one line per `input` statement (prompt, variable, value
   // and where the value came from). nullptr (default) discards them.
   void set_log_stream(std::ostream* log);

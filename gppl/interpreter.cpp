@@ -239,6 +239,8 @@ void Interpreter::finish() {
 
 void Interpreter::set_trace_stream(std::ostream* trace) { state_->trace = trace; }
 
+void Interpreter::trace_all(int level) { state_->trace_statement("all", level); }
+
 void Interpreter::trace_unhandled(std::string_view command) {
   State& s = *state_;
   if (s.trace == nullptr) return;

@@ -21,6 +21,8 @@ std::vector<OptionSpec> engine_option_specs() {
       {"--no-modal-reset", "", false, "keep modal memory across subroutine boundaries"},
       {"--answer", "", true, "NAME=VALUE: the answer to the post's `input` of NAME (repeatable)"},
       {"--answers", "", true, "a file of NAME=VALUE lines (`#` comments) answering `input` statements"},
+      {"--trace", "", true, "LEVEL[:FILE]: trace the post as SolidCAM does (LEVEL 0-5 for every procedure, "
+                            "`post` for the post's own trace statements), to stderr or FILE"},
   };
 }
 
@@ -116,6 +118,32 @@ RunOptions run_options(const Input& input, std::ostream& warnings) {
   std::string path = input.path;
   o.reopen = [path]() -> std::unique_ptr<toolpath::CommandSource> { return toolpath::TraceReader::open(path); };
   return o;
+}
+
+TraceOutput::TraceOutput(const Arguments& args, std::ostream& err) {
+  if (!args.has("--trace")) return;
+  const std::string value = args.value("--trace");
+  const std::size_t colon = value.find(':');
+  const std::string level = value.substr(0, colon);
+  if (level == "post") {
+    level_ = -1;
+  } else if (level.size() == 1 && level[0] >= '0' && level[0] <= '5') {
+    level_ = level[0] - '0';
+  } else {
+    throw UsageError{"--trace takes LEVEL[:FILE], LEVEL 0 to 5 or `post`, not `" + value + "`"};
+  }
+  stream_ = &err;
+  if (colon != std::string::npos) {
+    const std::string path = value.substr(colon + 1);
+    file_ = std::make_unique<std::ofstream>(path, std::ios::binary);
+    if (!*file_) throw std::runtime_error(path + ": cannot write the trace");
+    stream_ = file_.get();
+  }
+}
+
+void TraceOutput::apply(RunOptions& options) {
+  options.trace = stream_;
+  options.trace_level = level_;
 }
 
 Progress::Progress(std::ostream& err, bool quiet, const Input& input)

@@ -43,6 +43,20 @@ struct Input {
 // Run options for `input`: messages name it, and the engine may reopen it.
 RunOptions run_options(const Input& input, std::ostream& warnings);
 
+// `--trace LEVEL[:FILE]`: the post's `trace` output to stderr or FILE; LEVEL 0..5 traces every
+// procedure at that level, `post` only what the post's own `trace` statements ask. Keeps the file
+// open for the run.
+class TraceOutput {
+public:
+  TraceOutput(const Arguments& args, std::ostream& err);
+  void apply(RunOptions& options);
+
+private:
+  std::ostream* stream_ = nullptr;
+  std::unique_ptr<std::ofstream> file_;
+  int level_ = -1;
+};
+
 // A one-line progress bar on stderr, only when stderr is a terminal and --quiet was not given.
 class Progress {
 public:

@@ -51,6 +51,8 @@ int run_explain(const Arguments& args, std::ostream& out, std::ostream& err) {
   OutputFiles files(".", OutputFiles::LineEnd::LF, true);
   Explainer explainer(out, std::filesystem::path(engine_opts.post).filename().string());
   RunOptions options = run_options(input, err);
+  TraceOutput trace(args, err);
+  trace.apply(options);
   options.observer = &explainer;
   Progress progress(err, args.has("--quiet"), input);
   options.progress = [&](std::size_t n) { progress.update(n); };

@@ -31,6 +31,8 @@ int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (dialect == "trace") {
     Input input = Input::open(args.positional()[0]);
     RunOptions options = run_options(input, err);
+    TraceOutput trace(args, err);
+    trace.apply(options);
     options.main_path = main_path;
     Progress progress(err, quiet, input);
     options.progress = [&](std::size_t n) { progress.update(n); };

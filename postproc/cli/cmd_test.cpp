@@ -161,6 +161,8 @@ int run_test(const Arguments& args, std::ostream& out, std::ostream& err) {
 
   OutputFiles files(".", OutputFiles::LineEnd::LF, true);  // nothing is written to disk
   RunOptions options = run_options(input, err);
+  TraceOutput trace(args, err);
+  trace.apply(options);
   options.observer = &feeder;
   Progress progress(err, quiet, input);
   options.progress = [&](std::size_t n) { progress.update(n); };

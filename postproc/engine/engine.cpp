@@ -143,6 +143,7 @@ public:
     RunSummary summary;
     sink_.command_name = "@init_post";
     guarded([&] { interpreter_.start(); });
+    if (options_.trace_level >= 0) interpreter_.trace_all(options_.trace_level);  // after @init_post's own
     // Three stages overlap: reading the job, the PRP's filters, the post. Reading gets a thread of
     // its own because a filter may have to take in the whole job before it hands anything on
     // (gen_procs: @start_of_file names the last subroutine label).

@@ -78,6 +78,9 @@ struct RunOptions {
   std::function<std::filesystem::path(const std::string& default_name)> main_path;
   LineObserver* observer = nullptr;
   std::ostream* trace = nullptr;  // the post's `trace` output and the commands skipped
+  // 0..5: every procedure is traced at this level (as `trace "all":level` would), whatever the post
+  // asks; -1: only what the post's own `trace` statements ask.
+  int trace_level = -1;
   // Warnings about the stream (`job.trace:12:1: warning: ...`): a parameter a command should carry
   // and does not, a command the PRP does not expect. nullptr: discarded.
   std::ostream* warnings = nullptr;

@@ -56,6 +56,34 @@ TEST(Cli, TestWithNothingComparedFails) {
       << r.out;
 }
 
+// --trace switches on SolidCAM-style tracing from the command line: every procedure at a level, or
+// only the post's own `trace` statements, to stderr or a file.
+TEST(Cli, TraceFromTheCommandLine) {
+  const auto dir = std::filesystem::temp_directory_path() / ("postproc-trace-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "p.gpp") << "@start_of_file\n  trace '@line':2\n  {nl, '%'}\nendp\n@rapid_move\nendp\n"
+                                  "@line\n  {nl, 'G1'}\nendp\n";
+  std::ofstream(dir / "j.trace") << "@start_of_file\n@rapid_move\nxpos : 0\nypos : 0\nzpos : 5\n"
+                                    "@line\nxpos : 1\nypos : 0\nzpos : 0\nfeed : 100\n";
+  auto traced = [&](const std::string& option) {
+    auto r = run({"run", "-q", "--post", (dir / "p.gpp").string(), (dir / "j.trace").string(), "--trace", option,
+                  "-o", (dir / "out.nc").string()});
+    EXPECT_EQ(r.code, 0) << r.err;
+    return r.err;
+  };
+  // A line is traced when it ends: `%` ends where @line starts the next one.
+  EXPECT_EQ(traced("post"), "(1)@line            ==>\n                      > %\n                      > G1\n");
+  const std::string all = traced("1");
+  EXPECT_NE(all.find("(1)@start_of_file   ==>"), std::string::npos) << all;
+  EXPECT_NE(all.find("(1)@rapid_move      ==>"), std::string::npos) << all;
+  EXPECT_EQ(traced("1:" + (dir / "t.txt").string()), "");
+  std::ifstream file(dir / "t.txt");
+  std::string first;
+  std::getline(file, first);
+  EXPECT_EQ(first, "(1)@start_of_file   ==>");
+  std::filesystem::remove_all(dir);
+}
+
 // Every subcommand: a wrong command line is exit code 2 with a message naming the command; a
 // missing input file is exit code 1 naming the file; --help is 0.
 TEST(Cli, UsageErrorsOfEverySubcommand) {
