@@ -76,8 +76,10 @@ void Compiler::compile_line(const ParsedLine& line, Context& ctx, std::vector<Bl
       const VarRef& r = program_->refs[ref];
       if (!r.local && program_->globals[r.id].read_only)
         error(ErrorCode::ReadOnly, node_pos(*st.children[0], ctx.file), program_->globals[r.id].name);
+      const bool global = !r.local;
+      const std::uint32_t target = r.id;  // r goes stale: the expression may add references
       const std::uint32_t value = expression(*st.children[1], ctx);
-      if (options_.check_constant_assignments && !r.local) check_constant(program_->globals[r.id], value);
+      if (options_.check_constant_assignments && global) check_constant(program_->globals[target], value);
       emit(OpCode::Assign, pos, ref, value);
       break;
     }
