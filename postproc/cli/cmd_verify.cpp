@@ -64,8 +64,12 @@ int run_verify(const Arguments& args, std::ostream& out, std::ostream& err) {
   print_machine_warnings(engine, err);  // before posting, as `run` does
   verify::JobReport report = verify::verify_job(engine, job, tolerances, keep, target, &err);
   const auto& r = report.result;
+  // Say which controller model read the NC: a post for another controller is not verified by it.
+  const std::string model = target.kind == verify::Target::Kind::TwoAxisCnc
+                                ? "the 2XAxisCNC model (--dialect 2xaxiscnc)"
+                                : "the PikoCNC model (--dialect pikocnc)";
   if (!r.divergence) {
-    if (!args.has("--quiet")) out << fmt::format("{}: ok, {} motion events match\n", job, r.compared);
+    if (!args.has("--quiet")) out << fmt::format("{}: ok, {} motion events match; NC read by {}\n", job, r.compared, model);
     return kOk;
   }
   const auto& d = *r.divergence;
@@ -74,6 +78,7 @@ int run_verify(const Arguments& args, std::ostream& out, std::ostream& err) {
   out << fmt::format("  NC:       {}\n", report.nc_line.empty() ? "(ended)" : report.nc_line);
   print_side(out, "expected", d.expected);
   print_side(out, "actual", d.actual);
+  out << fmt::format("  NC read by {}\n", model);
   return kBadInput;
 }
 

@@ -133,7 +133,8 @@ TEST(VerifyCli, ShippedSampleMatches) {
   auto r = run({"verify", "--post", "../machines/pikocnc/pikocnc.gpp", "--prp", "../machines/pikocnc/pikocnc.prp",
                 "../docs/examples/sample-job.trace"});
   EXPECT_EQ(r.code, 0) << r.out << r.err;
-  EXPECT_EQ(r.out, "../docs/examples/sample-job.trace: ok, 50 motion events match\n");
+  EXPECT_EQ(r.out, "../docs/examples/sample-job.trace: ok, 50 motion events match; NC read by the PikoCNC model "
+                   "(--dialect pikocnc)\n");
 }
 
 // A copy of the PikoCNC post that writes G2 for counter-clockwise arcs and G3 for clockwise ones.
@@ -157,7 +158,8 @@ TEST(VerifyCli, PostThatTurnsArcsTheWrongWayIsCaughtAtTheFirstArc) {
             "  toolpath: command #13 @arc\n"
             "  NC:       SAMPLE.NC:19: G2 X40. Y5. I0. J5.\n"
             "  expected arc CCW XY to X40.0000 Y5.0000 Z-2.0000 centre X35.0000 Y5.0000 Z-2.0000 R5.0000 sweep 90.0000 F400\n"
-            "  actual   arc CW XY to X40.0000 Y5.0000 Z-2.0000 centre X35.0000 Y5.0000 Z-2.0000 R5.0000 sweep 270.0000 F400\n");
+            "  actual   arc CW XY to X40.0000 Y5.0000 Z-2.0000 centre X35.0000 Y5.0000 Z-2.0000 R5.0000 sweep 270.0000 F400\n"
+            "  NC read by the PikoCNC model (--dialect pikocnc)\n");
 }
 
 // Closing the loop the other way: PikoCNC G-code read back and posted through the Fanuc post.
