@@ -232,6 +232,8 @@ public:
   // The run log: `print` messages and one line per `input` statement (prompt, variable, value
   // and where the value came from). nullptr (default) discards them.
   void set_log_stream(std::ostream* log);
+  // Whether `input` statements log their answer there (print statements always do).
+  void log_inputs(bool on);
   // Answers for the `input` statements (see check_answers, whose errors it throws).
   void set_answers(std::span<const Answer> answers);
   // A toolpath command the post has no procedure for: traced at nesting level 0 (spec 8.2).

@@ -110,6 +110,8 @@ void Interpreter::set_answers(std::span<const Answer> answers) { prepare(state_-
 
 void Interpreter::set_log_stream(std::ostream* log) { state_->log = log; }
 
+void Interpreter::log_inputs(bool on) { state_->log_inputs = on; }
+
 void Interpreter::State::input(std::uint32_t index) {
   const InputStatement& s = program.inputs[index];
   std::string prompt;
@@ -118,7 +120,7 @@ void Interpreter::State::input(std::uint32_t index) {
   Cell& target = element(ref);  // an index out of range is an error even without an answer
   const PreparedAnswer* answer = index < answers.size() && answers[index] ? &*answers[index] : nullptr;
   if (answer) assign(target, answer->value, ChangeOverride::Compute, &ref);
-  if (log == nullptr) return;
+  if (log == nullptr || !log_inputs) return;
   *log << fmt::format("{}: input '{}': {} = {} ({})\n", where(program, s.pos), prompt, s.name, shown(target.value),
                       answer ? "answer from " + answer->source : "no answer: value kept");
 }

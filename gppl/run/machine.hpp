@@ -95,6 +95,7 @@ struct Interpreter::State {
 
   // input and print (docs/gppl-language.md): the run log, and an answer per input statement
   std::ostream* log = nullptr;
+  bool log_inputs = true;
   std::vector<std::optional<PreparedAnswer>> answers;  // by Program::inputs index
 
   // trace (8)

@@ -89,6 +89,7 @@ EngineOptions engine_options(const Arguments& args, std::ostream* log) {
     o.answers.push_back({given.substr(0, eq), given.substr(eq + 1), "--answer " + given});
   }
   o.log = log;
+  o.log_inputs = !args.has("--quiet");
   return o;
 }
 

@@ -64,7 +64,7 @@ int run_explain(const Arguments& args, std::ostream& out, std::ostream& err) {
 
 Subcommand explain_command() {
   std::vector<OptionSpec> options = engine_option_specs();
-  options.push_back({"--quiet", "-q", false, "no progress bar"});
+  options.push_back({"--quiet", "-q", false, "no progress bar and no `input` log lines"});
   return {
       "explain",
       "postproc explain --post P.gpp [--prp P.prp] JOB.trace",

@@ -66,7 +66,7 @@ Subcommand run_command() {
   options.push_back({"-o", "", true, "output: - (stdout, the default), a folder, or the main file"});
   options.push_back({"--dialect", "", true, "input format: trace (default), pikocnc (= pikocnc-2025), pikocnc-2016, 2xaxiscnc"});
   options.push_back({"--crlf", "", false, "end lines with CR LF (as SolidCAM on Windows) instead of LF"});
-  options.push_back({"--quiet", "-q", false, "no progress bar and no summary"});
+  options.push_back({"--quiet", "-q", false, "no progress bar, no summary and no `input` log lines"});
   return {
       "run",
       "postproc run --post P.gpp [--prp P.prp] [--dialect NAME] [-o DIR|FILE|-] JOB.trace|PROG.nc",

@@ -112,6 +112,7 @@ public:
     binding_.set_input_name(options.input_name);
     interpreter_.set_trace_stream(options.trace);
     interpreter_.set_log_stream(engine.options().log);
+    interpreter_.log_inputs(engine.options().log_inputs);
     if (!engine.options().answers.empty()) interpreter_.set_answers(engine.options().answers);
     interpreter_.set_limits(engine.options().max_loop_iterations, engine.options().max_call_depth);
     for (const auto& c : enums_.constants())

@@ -49,6 +49,7 @@ struct EngineOptions {
   std::vector<gppl::Answer> answers;
   // The run log: the post's `print` messages and one line per `input`. nullptr: discarded.
   std::ostream* log = nullptr;
+  bool log_inputs = true;  // false (`-q`): the answers to `input` statements are not logged
 };
 
 // One line the run produced (or one directive it executed), with who produced it.
