@@ -21,6 +21,7 @@ std::vector<OptionSpec> engine_option_specs() {
       {"--no-modal-reset", "", false, "keep modal memory across subroutine boundaries"},
       {"--answer", "", true, "NAME=VALUE: the answer to the post's `input` of NAME (repeatable)"},
       {"--answers", "", true, "a file of NAME=VALUE lines (`#` comments) answering `input` statements"},
+      {"--progress", "", false, "draw the progress bar even when stderr is not a terminal (a log of a long run)"},
       {"--trace", "", true, "LEVEL[:FILE]: trace the post as SolidCAM does (LEVEL 0-5 for every procedure, "
                             "`post` for the post's own trace statements), to stderr or FILE"},
   };
@@ -147,8 +148,8 @@ void TraceOutput::apply(RunOptions& options) {
   options.trace_level = level_;
 }
 
-Progress::Progress(std::ostream& err, bool quiet, const Input& input)
-    : err_(err), input_(input), enabled_(!quiet && &err == &std::cerr && ::isatty(STDERR_FILENO) != 0) {}
+Progress::Progress(std::ostream& err, bool quiet, const Input& input, bool forced)
+    : err_(err), input_(input), enabled_(forced || (!quiet && &err == &std::cerr && ::isatty(STDERR_FILENO) != 0)) {}
 
 Progress::~Progress() {
   if (drawn_) err_ << "\r\033[K" << std::flush;  // leave the terminal as it was

@@ -57,10 +57,11 @@ private:
   int level_ = -1;
 };
 
-// A one-line progress bar on stderr, only when stderr is a terminal and --quiet was not given.
+// A one-line progress bar on stderr, when stderr is a terminal and --quiet was not given, or when
+// --progress asks for it (a log of a long run).
 class Progress {
 public:
-  Progress(std::ostream& err, bool quiet, const Input& input);
+  Progress(std::ostream& err, bool quiet, const Input& input, bool forced = false);
   ~Progress();
   void update(std::size_t commands);
 

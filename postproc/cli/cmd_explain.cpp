@@ -54,7 +54,7 @@ int run_explain(const Arguments& args, std::ostream& out, std::ostream& err) {
   TraceOutput trace(args, err);
   trace.apply(options);
   options.observer = &explainer;
-  Progress progress(err, args.has("--quiet"), input);
+  Progress progress(err, args.has("--quiet"), input, args.has("--progress"));
   options.progress = [&](std::size_t n) { progress.update(n); };
   engine.run(*input.reader, files, options);
   return kOk;

@@ -34,7 +34,7 @@ int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
     TraceOutput trace(args, err);
     trace.apply(options);
     options.main_path = main_path;
-    Progress progress(err, quiet, input);
+    Progress progress(err, quiet, input, args.has("--progress"));
     options.progress = [&](std::size_t n) { progress.update(n); };
     summary = engine.run(*input.reader, files, options);
   } else {

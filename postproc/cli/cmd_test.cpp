@@ -164,7 +164,7 @@ int run_test(const Arguments& args, std::ostream& out, std::ostream& err) {
   TraceOutput trace(args, err);
   trace.apply(options);
   options.observer = &feeder;
-  Progress progress(err, quiet, input);
+  Progress progress(err, quiet, input, args.has("--progress"));
   options.progress = [&](std::size_t n) { progress.update(n); };
   const bool diff = args.has("--diff");
   if (diff) comparer.keep_origins();

@@ -86,7 +86,8 @@ int run_verify(const Arguments& args, std::ostream& out, std::ostream& err) {
 
 Subcommand verify_command() {
   std::vector<OptionSpec> options = engine_option_specs();
-  std::erase_if(options, [](const OptionSpec& o) { return o.name == "--trace"; });  // verify posts quietly
+  // verify posts quietly
+  std::erase_if(options, [](const OptionSpec& o) { return o.name == "--trace" || o.name == "--progress"; });
   options.push_back({"--tolerance", "", true, "mm by which positions, centres and radii may differ (default 0.001)"});
   options.push_back({"--nc", "", true, "also write the NC program that was read back to this file"});
   options.push_back({"--quiet", "-q", false, "print nothing when the motion matches"});

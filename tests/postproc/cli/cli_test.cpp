@@ -84,6 +84,27 @@ TEST(Cli, TraceFromTheCommandLine) {
   std::filesystem::remove_all(dir);
 }
 
+// --progress draws the bar into a log too (stderr is no terminal here).
+TEST(Cli, ProgressCanBeForced) {
+  const auto dir = std::filesystem::temp_directory_path() / ("postproc-progress-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream job(dir / "j.trace");
+    job << "@start_of_file\n";
+    for (int i = 0; i < 5000; ++i) job << "@line\nxpos : " << i << "\nypos : 0\nzpos : 0\nfeed : 100\n";
+  }
+  std::ofstream(dir / "p.gpp") << "@line\nendp\n@rapid_move\nendp\n";
+  for (bool forced : {false, true}) {
+    std::vector<std::string> args{"run", "-q", "--post", (dir / "p.gpp").string(), (dir / "j.trace").string(), "-o",
+                                  (dir / "out.nc").string()};
+    if (forced) args.push_back("--progress");
+    auto r = run(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("4096 commands") != std::string::npos, forced) << r.err;
+  }
+  std::filesystem::remove_all(dir);
+}
+
 // Every subcommand: a wrong command line is exit code 2 with a message naming the command; a
 // missing input file is exit code 1 naming the file; --help is 0.
 TEST(Cli, UsageErrorsOfEverySubcommand) {
