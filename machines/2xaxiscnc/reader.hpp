@@ -22,9 +22,11 @@ struct Options {
   // machine_speed). With it, moves carry `feed` = coefficient x speed and @end_program the estimated
   // motion time; 0: unknown, neither is given.
   double machine_speed = 3000.0;
-  // Moves made at this coefficient are read as @rapid_move (the post writes rapids at it); 0: every
-  // move is a @line. X0Y0 is always a rapid.
-  double rapid_coefficient = 1.0;
+  // Moves made at this coefficient are read as @rapid_move; 0 (the default): every move is a @line
+  // at its coefficient's feed. The format has only linear moves: a frame at coefficient 1 may be a
+  // cut, and re-posting a program to another controller must not turn cuts into rapids. X0Y0 is
+  // always a rapid.
+  double rapid_coefficient = 0.0;
   // Numbers become single-precision floats as in the application; false keeps their decimal value
   // (to check a post's arithmetic without the controller's rounding).
   bool single_precision = true;
