@@ -109,6 +109,13 @@ private:
   // A straight move to `to`; the axes it names become known.
   void move(const Command& c, MotionKind kind, const Eigen::Vector3d& to, double feed,
             std::array<bool, 3> sets = {true, true, true}) {
+    // The controller models start at X0 Y0 Z0: a first move to there is no move for them (a tool
+    // change that approaches X0 Y0 writes `G0 X0. Y0.`, which they drop), so it is none here either.
+    if (!moved_ && (to - position_).norm() <= 1e-9) {
+      for (int i = 0; i < 3; ++i) known_[i] = known_[i] || sets[i];
+      return;
+    }
+    moved_ = true;
     Motion m = base(c, kind);
     m.from = position_;
     m.from_known = known_[0] && known_[1] && known_[2];
@@ -145,6 +152,7 @@ private:
     m.feed = feed(c);
     m.arc = geo::make_arc(position_, end, centre, *plane, dir, number(c, "arc_size"));
     position_ = end;
+    moved_ = true;
     emit(m);
   }
 
@@ -249,6 +257,7 @@ private:
   double scale_ = 1.0;
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
   std::array<bool, 3> known_{false, false, false};
+  bool moved_ = false;  // a move was emitted (until then the position is the controllers' start, 0 0 0)
   int spindle_ = 0;
   std::string cycle_;
   double clearance_ = 0, upper_ = 0, lower_ = 0, step_ = 0, cycle_feed_ = 0;

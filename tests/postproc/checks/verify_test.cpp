@@ -138,6 +138,21 @@ TEST(VerifyCli, ShippedSampleMatches) {
 }
 
 // A copy of the PikoCNC post that writes G2 for counter-clockwise arcs and G3 for clockwise ones.
+// A tool change that approaches X0 Y0, where the controller models start: the NC's `G0 X0. Y0.` is no
+// move for the model, and the expected side drops the same first move (issue 21).
+TEST(VerifyCli, ApproachToTheOriginIsNoDivergence) {
+  for (const std::vector<std::string>& target :
+       {std::vector<std::string>{"--post", "../machines/pikocnc/pikocnc.gpp", "--prp", "../machines/pikocnc/pikocnc.prp"},
+        std::vector<std::string>{"--dialect", "2xaxiscnc", "--post", "../machines/2xaxiscnc/2xaxiscnc.gpp", "--prp",
+                                 "../machines/2xaxiscnc/2xaxiscnc.prp", "--answer", "drill_action=RunScript_drill.script"}}) {
+    std::vector<std::string> args{"verify"};
+    args.insert(args.end(), target.begin(), target.end());
+    args.push_back("postproc/checks/data/origin-job.trace");
+    auto r = run(args);
+    EXPECT_EQ(r.code, 0) << r.out << r.err;
+  }
+}
+
 TEST(VerifyCli, PostThatTurnsArcsTheWrongWayIsCaughtAtTheFirstArc) {
   std::string post = slurp("../machines/pikocnc/pikocnc.gpp");
   const std::string right = "  if arc_direction eq CCW\n    gcode = 3\n  else\n    gcode = 2\n";
