@@ -91,3 +91,73 @@ TEST(Enumerations, CodesAreStableAndCaseInsensitive) {
 }
 
 }  // namespace
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "postproc/engine/command_names.hpp"
+
+namespace {
+
+std::string_view kind_name(ParameterKind k) {
+  switch (k) {
+    case ParameterKind::Integer: return "integer";
+    case ParameterKind::Numeric: return "numeric";
+    case ParameterKind::Logical: return "logical";
+    case ParameterKind::String: return "string";
+    case ParameterKind::Enum: return "word";
+  }
+  return "?";
+}
+
+// docs/commands.md: every command a job may send, with the parameters the engine's table gives it.
+std::string render_commands() {
+  std::ostringstream md;
+  md << "# Toolpath commands\n\n"
+        "Every command a job may send to a post, with the parameters it carries and their types, as the\n"
+        "engine knows them (`postproc/engine/command_names.cpp`, `postproc/engine/parameter_table*.cpp`;\n"
+        "`tests/postproc/engine/tables_test.cpp` renders this page from them and fails when it differs:\n"
+        "rerun it with `POSTPROC_UPDATE_DOCS=1`). A `word` parameter holds an enumeration word (`CW`,\n"
+        "`COMP_LEFT`) that GPPL compares as an integer code ([engine.md](engine.md#enumeration-constants)).\n"
+        "A post receives every parameter a command carries, listed here or not: a trace may carry more\n"
+        "([system-variables.md](system-variables.md) lists every name SolidCAM defines).\n\n"
+        "What happens when the post has no procedure for a command ([engine.md](engine.md#every-command)):\n"
+        "**stop** (the run stops: moves would be lost), **quiet** (the command only informs), or a warning.\n\n"
+        "| command | without a procedure | parameters |\n|---|---|---|\n";
+  std::vector<std::string_view> names(postproc::stream_command_names().begin(), postproc::stream_command_names().end());
+  std::sort(names.begin(), names.end());
+  for (std::string_view command : names) {
+    std::string params;
+    for (const auto& p : postproc::parameter_table()) {
+      std::istringstream carriers{std::string(p.commands)};
+      for (std::string c; carriers >> c;)
+        if (toolpath::iequals(c, command)) {
+          params += (params.empty() ? "" : ", ") + std::string("`") + std::string(p.name) + "` " +
+                    std::string(kind_name(p.kind));
+          break;
+        }
+    }
+    const char* missing = postproc::is_basic_motion(command)      ? "stop"
+                          : postproc::is_informational(command) ? "quiet"
+                                                                : "warning";
+    md << "| `" << command << "` | " << missing << " | " << (params.empty() ? "(none listed)" : params) << " |\n";
+  }
+  return md.str();
+}
+
+TEST(CommandReference, PageIsTheTables) {
+  const std::string path = "../docs/commands.md";
+  const std::string expected = render_commands();
+  if (std::getenv("POSTPROC_UPDATE_DOCS")) {
+    std::ofstream(path, std::ios::binary) << expected;
+    return;
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream actual;
+  actual << in.rdbuf();
+  EXPECT_TRUE(actual.str() == expected) << path << " differs from the engine's tables: rerun this test with "
+                                                   "POSTPROC_UPDATE_DOCS=1";
+}
+
+}  // namespace
