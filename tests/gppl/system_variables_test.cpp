@@ -13,6 +13,7 @@
 
 #include "gppl/gppl.hpp"
 #include "gppl/compile/system_variables.hpp"
+#include "tests/support/rendered_doc.hpp"
 
 namespace {
 
@@ -140,17 +141,8 @@ std::string render_reference() {
 }
 
 TEST(SystemVariables, ReferencePageIsTheTable) {
-  const std::string path = "../docs/system-variables.md";
-  const std::string expected = render_reference();
-  if (std::getenv("POSTPROC_UPDATE_DOCS")) {
-    std::ofstream(path, std::ios::binary) << expected;
-    return;
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream actual;
-  actual << in.rdbuf();
-  EXPECT_TRUE(actual.str() == expected) << path << " differs from gppl/compile/system_variables.inc: rerun this test with "
-                                                   "POSTPROC_UPDATE_DOCS=1";
+  test_support::expect_page_is_rendered("../docs/system-variables.md", render_reference(),
+                                        "gppl/compile/system_variables.inc");
 }
 
 }  // namespace

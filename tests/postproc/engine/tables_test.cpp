@@ -92,11 +92,10 @@ TEST(Enumerations, CodesAreStableAndCaseInsensitive) {
 
 }  // namespace
 
-#include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "postproc/engine/command_names.hpp"
+#include "tests/support/rendered_doc.hpp"
 
 namespace {
 
@@ -147,17 +146,7 @@ std::string render_commands() {
 }
 
 TEST(CommandReference, PageIsTheTables) {
-  const std::string path = "../docs/commands.md";
-  const std::string expected = render_commands();
-  if (std::getenv("POSTPROC_UPDATE_DOCS")) {
-    std::ofstream(path, std::ios::binary) << expected;
-    return;
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream actual;
-  actual << in.rdbuf();
-  EXPECT_TRUE(actual.str() == expected) << path << " differs from the engine's tables: rerun this test with "
-                                                   "POSTPROC_UPDATE_DOCS=1";
+  test_support::expect_page_is_rendered("../docs/commands.md", render_commands(), "the engine's tables");
 }
 
 }  // namespace
