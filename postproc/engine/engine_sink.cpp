@@ -11,12 +11,16 @@ void EngineSink::write_line(std::string_view line, const gppl::LineOrigin& origi
   while (first < line.size() && (line[first] == ' ' || line[first] == '\t')) ++first;
   const bool maybe_directive = first < line.size() && line[first] == '!';
   if (!maybe_directive && !observer_) {  // the usual line: straight to the file
-    lines += files_.break_starts_file(origin.after_break);
-    files_.write_line(line, origin.after_break);
-    ++lines;
+    write_to_file(line, origin.after_break);
     return;
   }
   write_observed(line, origin, maybe_directive);
+}
+
+// The count includes the empty first line the break before a file's first block makes.
+void EngineSink::write_to_file(std::string_view line, bool after_break) {
+  lines += files_.break_starts_file(after_break) ? 2 : 1;
+  files_.write_line(line, after_break);
 }
 
 void EngineSink::write_observed(std::string_view line, const gppl::LineOrigin& origin, bool maybe_directive) {
@@ -56,9 +60,7 @@ void EngineSink::write_observed(std::string_view line, const gppl::LineOrigin& o
       files_.execute(*directive, {}, origin.after_break);
     }
   } else {
-    lines += files_.break_starts_file(origin.after_break);
-    files_.write_line(line, origin.after_break);
-    ++lines;
+    write_to_file(line, origin.after_break);
   }
 }
 

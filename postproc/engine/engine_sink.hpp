@@ -55,6 +55,7 @@ public:
 
 private:
   void write_observed(std::string_view line, const gppl::LineOrigin& origin, bool maybe_directive);
+  void write_to_file(std::string_view line, bool after_break);
 
   bool wrote_in_command_ = false;
   std::size_t opener_index_ = 0;
