@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -229,10 +230,13 @@ RegressionComparer::Alignment RegressionComparer::align(const Stream& s) const {
   Alignment result;
   const long max = std::min(n + m, kMaxEdits);
   std::vector<long> v(std::size_t(2 * max + 2), 0);
-  std::vector<std::vector<long>> history;  // v before each round, for the way back
+  // For the way back, what round d-1 left for round d: v at k = -(d-1), -(d-1)+2, .., d-1 (d values,
+  // 32-bit: about 8 MB at the 2000-edit limit).
+  std::vector<std::vector<std::int32_t>> history;
   long found = -1;
   for (long d = 0; d <= max && found < 0; ++d) {
-    history.push_back(v);
+    std::vector<std::int32_t>& before = history.emplace_back(std::size_t(d));
+    for (long k = -(d - 1), i = 0; k <= d - 1; k += 2, ++i) before[std::size_t(i)] = std::int32_t(v[std::size_t(k + max)]);
     for (long k = -d; k <= d; k += 2) {
       const std::size_t at = std::size_t(k + max);
       long x = (k == -d || (k != d && v[at - 1] < v[at + 1])) ? v[at + 1] : v[at - 1] + 1;
@@ -258,12 +262,12 @@ RegressionComparer::Alignment RegressionComparer::align(const Stream& s) const {
   std::vector<DiffHunk> edits;  // one line each, from the end
   long x = n, y = m;
   for (long d = found; d > 0; --d) {
-    const std::vector<long>& pv = history[std::size_t(d)];
+    const std::vector<std::int32_t>& before = history[std::size_t(d)];
+    auto pv = [&](long kk) { return long(before[std::size_t((kk + d - 1) / 2)]); };
     const long k = x - y;
-    const std::size_t at = std::size_t(k + max);
-    const bool down = k == -d || (k != d && pv[at - 1] < pv[at + 1]);
+    const bool down = k == -d || (k != d && pv(k - 1) < pv(k + 1));
     const long pk = down ? k + 1 : k - 1;
-    const long px = pv[std::size_t(pk + max)], py = px - pk;
+    const long px = pv(pk), py = px - pk;
     while (x > px + (down ? 0 : 1) && y > py + (down ? 1 : 0)) --x, --y;  // the equal run
     if (down) edits.push_back({std::size_t(px), 0, std::size_t(py), 1});  // inserted b[py]
     else edits.push_back({std::size_t(px), 1, std::size_t(py), 0});      // deleted a[px]
