@@ -126,28 +126,25 @@ void OutputFiles::write_line(std::string_view line, bool after_break) {
     return;
   }
   // The usual line: its break and its text in one copy.
-  const std::size_t n = eol + line.size();
+  char* out = room(eol + line.size());
+  if (eol == 2) *out++ = '\r';
+  if (eol > 0) *out++ = '\n';
+  if (!line.empty()) std::memcpy(out, line.data(), line.size());
+}
+
+void OutputFiles::append(std::string_view bytes) {
+  if (!bytes.empty()) std::memcpy(room(bytes.size()), bytes.data(), bytes.size());
+}
+
+char* OutputFiles::room(std::size_t n) {
   entries_[current_].size += n;
   if (buffered_ + n > buffer_.size()) {
     drain();
     if (n > buffer_.size()) buffer_.resize(n);
   }
   char* out = buffer_.data() + buffered_;
-  if (eol == 2) *out++ = '\r';
-  if (eol > 0) *out++ = '\n';
-  if (!line.empty()) std::memcpy(out, line.data(), line.size());
   buffered_ += n;
-}
-
-void OutputFiles::append(std::string_view bytes) {
-  const std::size_t n = bytes.size();
-  entries_[current_].size += n;
-  if (buffered_ + n > buffer_.size()) {
-    drain();
-    if (n > buffer_.size()) buffer_.resize(n);
-  }
-  std::memcpy(buffer_.data() + buffered_, bytes.data(), n);
-  buffered_ += n;
+  return out;
 }
 
 void OutputFiles::drain() {

@@ -95,6 +95,7 @@ private:
   void switch_to(std::size_t index);
   void run(const Directive& directive, const LineCallback& copied_line);
   void append(std::string_view bytes);  // to the current file, through the buffer
+  char* room(std::size_t n);            // n bytes of the buffer for the current file, counted in its size
   void drain();  // the buffered lines into the current file's stream
   void copy_into_current(std::string_view name, const LineCallback& copied_line);
   std::string display_name(const Entry& e) const;
