@@ -11,8 +11,6 @@ bool digit(char c) { return c >= '0' && c <= '9'; }
 bool alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
 bool blank(char c) { return c == ' ' || c == '\t'; }
 
-// Replaces dates and times in `text` (a comment) with `#`: `21.11.2025`, `2025-11-21`, `21-NOV-2025`,
-// `12:05`, `12:05:33`. A plain decimal number (one `.`) is not a date.
 // A month word that opens a date (`JUL-12-2026`, `JUL- 9-2026`, as SolidCAM's posts print it).
 bool month_opens_date(std::string_view text, std::size_t i) {
   if (i + 4 >= text.size() || !alpha(text[i]) || !alpha(text[i + 1]) || !alpha(text[i + 2]) || alpha(text[i + 3])) return false;
@@ -22,6 +20,8 @@ bool month_opens_date(std::string_view text, std::size_t i) {
   return k < text.size() && digit(text[k]);
 }
 
+// Replaces dates and times in `text` (a comment) with `#`: `21.11.2025`, `2025-11-21`, `21-NOV-2025`,
+// `JUL-12-2026`, `12:05`, `12:05:33`. A plain decimal number (one `.`) is not a date.
 std::string mask_datetime(std::string_view text) {
   std::string out;
   std::size_t i = 0;

@@ -340,20 +340,19 @@ private:
   }
 
   // The post's procedures that neither a job sends nor a `call` names: a misspelled command name
-  // (`@rapid_mvoe`) is among them. The one nearest to `name`, or empty.
-  std::string misspelling_of(std::string_view name) const {
+  // (`@rapid_mvoe`) is among them. A hint naming the one nearest to `name`, or empty.
+  std::string misspelling_hint(std::string_view name) const {
     std::vector<std::string_view> unused;
     for (const auto& p : procedures_)
       if (!p.called && !is_stream_command_name(p.name)) unused.push_back(p.name);
-    return std::string(gppl::nearest_name(name, unused));
+    const std::string_view guess = gppl::nearest_name(name, unused);
+    return guess.empty() ? std::string()
+                         : fmt::format(" (the post defines {}, which no command has and nothing calls: a misspelling?)", guess);
   }
 
   std::string missing_motion(std::string_view name) const {
-    std::string message = fmt::format("the post has no {} procedure, so these moves would be missing from the NC "
-                                      "program", name);
-    if (std::string guess = misspelling_of(name); !guess.empty())
-      message += fmt::format(" (the post defines {}, which no command has and nothing calls: a misspelling?)", guess);
-    return message;
+    return fmt::format("the post has no {} procedure, so these moves would be missing from the NC program{}", name,
+                       misspelling_hint(name));
   }
 
   // After the run: one warning for each command name the post had no procedure for, unless the
@@ -365,13 +364,10 @@ private:
     std::sort(kinds.begin(), kinds.end(),
               [](const auto& a, const auto& b) { return a.second->first_unhandled_line < b.second->first_unhandled_line; });
     for (const auto& [name, info] : kinds) {
-      std::string message = info->unhandled == 1
-                                ? fmt::format("{}: the post has no procedure for it, so this command was not posted", *name)
-                                : fmt::format("{}: the post has no procedure for it, so its {} commands were not posted",
-                                              *name, info->unhandled);
-      if (std::string guess = misspelling_of(*name); !guess.empty())
-        message += fmt::format(" (the post defines {}, which no command has and nothing calls: a misspelling?)", guess);
-      warnings(info->first_unhandled_line, message);
+      const std::string what = info->unhandled == 1 ? std::string("this command was")
+                                                    : fmt::format("its {} commands were", info->unhandled);
+      warnings(info->first_unhandled_line, fmt::format("{}: the post has no procedure for it, so {} not posted{}", *name,
+                                                       what, misspelling_hint(*name)));
     }
   }
 
