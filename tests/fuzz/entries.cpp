@@ -113,11 +113,18 @@ void trace_reader(std::string_view data) {
       broken("the canonical form reads back other commands");
 }
 
+// As a run compiles a post, and as `postproc check` does (every name declared, constant
+// assignments checked where they stand, "did you mean" hints).
 void gppl_check(std::string_view data) {
-  try {
-    gppl::compile_source(data, "fuzz.gpp", gppl::CompileOptions{});
-  } catch (const gppl::Error&) {
-  } catch (const gppl::Errors&) {
+  gppl::CompileOptions check;
+  check.implicit_host_variables = false;
+  check.check_constant_assignments = true;
+  for (const gppl::CompileOptions& options : {gppl::CompileOptions{}, check}) {
+    try {
+      gppl::compile_source(data, "fuzz.gpp", options);
+    } catch (const gppl::Error&) {
+    } catch (const gppl::Errors&) {
+    }
   }
 }
 
