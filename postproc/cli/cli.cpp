@@ -68,6 +68,7 @@ const std::vector<Subcommand>& subcommands() {
       plot_command(),
       verify_command(),
       script_command(),
+      new_post_command(),
   };
   return all;
 }

@@ -68,5 +68,6 @@ Subcommand explain_command();
 Subcommand plot_command();
 Subcommand verify_command();
 Subcommand script_command();
+Subcommand new_post_command();
 
 }  // namespace postproc::cli

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "toolpath/bounded_read.hpp"
+#include "toolpath/error.hpp"
 
 namespace postproc::cli {
 
@@ -184,6 +185,25 @@ Destination Destination::parse(const std::string& o) {
   d.main_file = p;
   d.directory = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
   return d;
+}
+
+void write_file_replacing(const std::string& path, std::string_view text) {
+  const std::string temp = path + ".tmp";
+  {
+    std::ofstream file(temp, std::ios::binary | std::ios::trunc);
+    file.write(text.data(), static_cast<std::streamsize>(text.size()));
+    if (!file.flush()) {
+      std::error_code ec;
+      std::filesystem::remove(temp, ec);
+      throw toolpath::InputError({path, 0, 0}, "cannot write file");
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, path, ec);
+  if (ec) {
+    std::filesystem::remove(temp, ec);
+    throw toolpath::InputError({path, 0, 0}, "cannot write file");
+  }
 }
 
 }  // namespace postproc::cli

@@ -8,6 +8,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "postproc/cli/cli.hpp"
@@ -30,6 +31,10 @@ std::vector<gppl::Answer> read_answers_file(const std::string& path);
 void print_machine_warnings(const prp::MachineParameters& machine, std::ostream& err);
 // The engine loads the file once per unit half; both give the same warnings, so one half is printed.
 void print_machine_warnings(const Engine& engine, std::ostream& err);
+
+// Writes `text` to `path` through a temporary file renamed on success, so that a failed write never
+// leaves half a file in place of the old one; throws toolpath::InputError naming `path`.
+void write_file_replacing(const std::string& path, std::string_view text);
 
 // The job file, opened so that the progress bar can tell how far the reader is.
 struct Input {

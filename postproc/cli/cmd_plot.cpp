@@ -12,6 +12,7 @@
 #include <string>
 
 #include "postproc/cli/cli.hpp"
+#include "postproc/cli/cli_support.hpp"
 #include "postproc/cli/open_input.hpp"
 #include "toolpath/command.hpp"
 #include "toolpath/error.hpp"
@@ -170,18 +171,7 @@ int run_plot(const Arguments& args, std::ostream& out, std::ostream& err) {
   Plotter plot;
   toolpath::Command c;
   while (source->next(c)) plot.command(c);
-  const std::string temp = output + ".tmp";
-  {
-    std::ofstream file(temp, std::ios::binary | std::ios::trunc);
-    file << plot.svg();
-    if (!file.flush()) throw toolpath::InputError({output, 0, 0}, "cannot write file");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, output, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    throw toolpath::InputError({output, 0, 0}, "cannot write file");
-  }
+  write_file_replacing(output, plot.svg());
   out << fmt::format("{}: wrote {}\n", input, output);
   return kOk;
 }
