@@ -16,6 +16,7 @@
 #include "postproc/engine/directive.hpp"
 #include "postproc/engine/engine_sink.hpp"
 #include "postproc/engine/command_names.hpp"
+#include "postproc/engine/cycle_retreat.hpp"
 #include "postproc/engine/enumerations.hpp"
 #include "postproc/engine/host_variables.hpp"
 #include "postproc/engine/line_numbers.hpp"
@@ -158,6 +159,7 @@ public:
     toolpath::LookaheadSource first(checked);
     summary.units = engine_.options().units.value_or(job_units(first.peek()));
     machine_ = &engine_.machine(summary.units);
+    retreat_.emplace(*machine_);
     refuse_procedures_without_calls();
     toolpath::PrefetchSource read_ahead(first);
     auto filtered = prp::build_filter_chain(*machine_, read_ahead, [&](const toolpath::Command& c, const std::string& m) {
@@ -207,6 +209,7 @@ private:
     bool drill = false;
     bool structural = false;  // ProgramStructure::before() has something to do
     bool motion = false;      // @rapid_move, @line, @arc: without a procedure the moves are lost
+    bool lathe_cycle = false; // @turning, @turn_endproc: a cycle may leave the tool elsewhere
     // Commands of this name the post had no procedure for, the first one's line, and whether any
     // came at a depth other than 0 (a trace's depth 0: SolidCAM's own post had none either).
     std::size_t unhandled = 0;
@@ -269,6 +272,7 @@ private:
       made.drill = iequals(name, "@drill");
       made.structural = ProgramStructure::concerns(probe);
       made.motion = is_basic_motion(name);
+      made.lathe_cycle = iequals(name, "@turning") || iequals(name, "@turn_endproc");
       it = commands_.emplace(std::string(name), std::move(made)).first;
     }
     std::move_backward(recent_.begin(), recent_.end() - 1, recent_.end());
@@ -323,6 +327,25 @@ private:
       throw std::runtime_error("the post stopped the run (`abort` in " + command.name + ")");
     }
     if (reset && command_info.calls_subroutine) interpreter_.reset_change_memory();
+    if (command_info.lathe_cycle) follow_cycle_retreat(command, next);
+  }
+
+  // The tool is where the cycle left it: the post's position holds that point, unchanged, so the
+  // next move writes the axes that really move (docs/engine.md, "Turning cycles").
+  void follow_cycle_retreat(const toolpath::Command& command, std::string_view next) {
+    std::array<std::optional<gppl::VariableId>, 3> axes{binding_.slot("xpos").id, binding_.slot("ypos").id,
+                                                        binding_.slot("zpos").id};
+    auto read = [&](const std::optional<gppl::VariableId>& id) {
+      if (!id) return 0.0;
+      const gppl::Value& v = interpreter_.value(*id);
+      return v.type == gppl::Type::Integer ? static_cast<double>(v.integer) : v.numeric;
+    };
+    const CycleRetreat::Point where{read(axes[0]), read(axes[1]), read(axes[2])};
+    const std::optional<CycleRetreat::Point> end = retreat_->after(command, next, where);
+    if (!end) return;
+    const std::array<double, 3> values{end->x, end->y, end->z};
+    for (std::size_t i = 0; i < 3; ++i)
+      if (axes[i]) interpreter_.assign_numeric(*axes[i], values[i], gppl::ChangeOverride::ForceUnchanged);
   }
 
   // gen_procs = Y (or C) makes the jobs subroutines: @proc .. @end_proc bodies after the main program,
@@ -439,6 +462,7 @@ private:
   ParameterBinding binding_;
   LineNumbers line_numbers_;
   ProgramStructure structure_;
+  std::optional<CycleRetreat> retreat_;  // made with the PRP half of the run
   std::optional<gppl::VariableId> prev_command_, current_command_, next_command_;
   std::optional<std::array<gppl::VariableId, 3>> command_names_;  // all three: assigned in one call
   std::vector<std::string> drill_parameters_;

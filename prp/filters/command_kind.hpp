@@ -27,7 +27,8 @@ namespace prp {
   X(proc, "proc") X(end_proc, "end_proc") X(call_proc, "call_proc") X(call_prms, "call_prms") X(loop, "loop")          \
   X(end_loop, "end_loop") X(rotate, "rotate") X(mirror, "mirror") X(change_ref_point, "change_ref_point")              \
   X(start_of_file, "start_of_file") X(end_of_file, "end_of_file") X(start_of_job, "start_of_job")                      \
-  X(end_of_job, "end_of_job") X(home_number, "home_number") X(rotary_info, "rotary_info") X(init_cpos, "init_cpos")
+  X(end_of_job, "end_of_job") X(home_number, "home_number") X(rotary_info, "rotary_info") X(init_cpos, "init_cpos")  \
+  X(turning, "turning") X(groove, "groove")
 
 enum class CommandKind : std::uint8_t {
   other,  // any command the filters pass without looking at it

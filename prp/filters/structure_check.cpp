@@ -17,6 +17,8 @@ StructureCheck::StructureCheck(toolpath::CommandSource& input, const MachinePara
       mirror_(p.logical("mirror")),
       software_transform_(p.logical("software_transform")),
       comp_exist_(p.logical("comp_exist")),
+      turning_cycle_(p.logical("turning_cycle")),
+      groove_cycle_(p.logical("groove_cycle")),
       programs_(program_numbers(p)),
       procedures_(procedure_numbers(p)) {
   if (p.has("num_homes")) num_homes_ = p.integer("num_homes");
@@ -28,7 +30,7 @@ using K = CommandKind;
 // The only commands check() looks at.
 constexpr KindSet kChecked = bit(K::call_proc) | bit(K::call_prms) | bit(K::loop) | bit(K::rotate) | bit(K::mirror) |
                              bit(K::change_ref_point) | bit(K::compensation) | bit(K::proc) |
-                             bit(K::start_of_file) | bit(K::home_number);
+                             bit(K::start_of_file) | bit(K::home_number) | bit(K::turning) | bit(K::groove);
 
 }  // namespace
 
@@ -59,6 +61,12 @@ void StructureCheck::check(const toolpath::Command& c, CommandKind kind) {
       break;
     case K::mirror:
       if (!mirror_) warn("@mirror although the PRP says mirror = N");
+      break;
+    case K::turning:
+      if (!turning_cycle_) warn("@turning although the PRP says turning_cycle = N (the control has no turning cycle)");
+      break;
+    case K::groove:
+      if (!groove_cycle_) warn("@groove although the PRP says groove_cycle = N (the control has no grooving cycle)");
       break;
     default: break;
   }

@@ -10,7 +10,7 @@ namespace {
 
 const char* kPrp =
     "@pre_processor\n"
-    "gen_procs = N\nloop_exist = N\ncomp_exist = N\nnum_homes = 2\n"
+    "gen_procs = N\nloop_exist = N\ncomp_exist = N\nnum_homes = 2\nturning_cycle = N\ngroove_cycle = N Y\n"
     "prog_num_min = 5000\nprog_num_max = 8999\nproc_num_min = 1\nproc_num_max = 99\n"
     "dflt_start = 0 200 100, 0 7.874 3.937\n"
     "endp\n";
@@ -38,12 +38,17 @@ std::string error_for(toolpath::Command c) {
 TEST(StructureCheck, MismatchesAreWarnings) {
   EXPECT_EQ(warnings_for({command("@call_proc", {{"label", num(3)}}), command("@loop", {}),
                           command("@call_prms", {}), command("@home_number", {{"home_number", num(3)}}),
-                          command("@compensation", {{"side", word("COMP_OFF")}})}),
+                          command("@compensation", {{"side", word("COMP_OFF")}}), command("@turning", {}),
+                          command("@groove", {}), command("@turning", {})}),
             (std::vector<std::string>{"@call_proc: @call_proc although the PRP says gen_procs = N",
                                       "@loop: @loop although the PRP says loop_exist = N",
                                       "@call_prms: @call_prms although the PRP says gen_procs = N (only D calls with "
                                       "parameters)",
-                                      "@home_number: home_number 3 is above num_homes 2"}));
+                                      "@home_number: home_number 3 is above num_homes 2",
+                                      "@turning: @turning although the PRP says turning_cycle = N (the control has no "
+                                      "turning cycle)",
+                                      "@groove: @groove although the PRP says groove_cycle = N (the control has no "
+                                      "grooving cycle)"}));
 }
 
 TEST(StructureCheck, LimitsAreErrors) {

@@ -270,3 +270,45 @@ TEST_F(EngineTest, ErrorsNameTheCommandAndLeaveOldFilesAlone) {
 }
 
 }  // namespace
+
+// A lathe cycle leaves the tool at its start point or at its last point, as the PRP's retreat
+// flags say; the next move then writes the axes that really move (docs/engine.md, "Turning
+// cycles"). The geometry, when it follows in @turn_proc .. @turn_endproc, runs first.
+TEST_F(EngineTest, LatheCyclesLeaveTheToolWhereTheRetreatFlagsSay) {
+  const std::string gpp =
+      "@init_post\n  xpos_f = '5.3'\n  zpos_f = '5.3'\nendp\n"
+      "@rapid_move\n  {nl, 'G0', [' X'xpos], [' Z'zpos]}\nendp\n"
+      "@line\n  {nl, 'G1', [' X'xpos], [' Z'zpos]}\nendp\n"
+      "@turning\n  {nl, 'CYCLE'}\nendp\n"
+      "@turn_proc\nendp\n@turn_endproc\nendp\n";
+  const std::string start = "@start_of_file\n@rapid_move\nxpos : 21\nypos : 0\nzpos : 2\n";
+  const std::string geometry =
+      "@turn_proc\nlabel : 1\n@line\nxpos : 6\nypos : 0\nzpos : 2\nfeed : 0.2\n@line\nxpos : 20\nypos : 0\nzpos : -30\n"
+      "@turn_endproc\nlabel : 1\n";
+  const std::string away = "@rapid_move\nxpos : 20\nypos : 0\nzpos : 5\n";
+  auto cycle = [](const char* work, const char* finish) {
+    return std::string("@turning\nwork_type : ") + work + "\nfinish : " + finish +
+           "\nsemi_finish : FALSE\nlast_pos_x : 20\nlast_pos_z : -30\nlabel : 1\n";
+  };
+  struct Case {
+    const char* what;
+    const char* flags;  // PRP lines
+    std::string job;
+    const char* after;  // the line the move away writes
+  } cases[] = {
+      {"rough, back to the start", "rough_retreat = Y\n", cycle("ROUGH", "FALSE") + geometry + away, "G0 X20. Z5."},
+      {"rough, stays at the end", "rough_retreat = N\n", cycle("ROUGH", "FALSE") + geometry + away, "G0 Z5."},
+      {"finish flag decides a PROFILE cycle", "rough_retreat = N\nfinish_retreat = Y\n",
+       cycle("PROFILE", "TRUE") + geometry + away, "G0 X20. Z5."},
+      {"a combined cycle ends with its finish", "rough_retreat = Y\nfinish_retreat = N\n",
+       cycle("ROUGH", "TRUE") + geometry + away, "G0 Z5."},
+      // No geometry in the stream (turn_common_proc): the start point, or the cycle's last point.
+      {"shared geometry, back to the start", "finish_retreat = Y\n", cycle("PROFILE", "TRUE") + away, "G0 X20. Z5."},
+      {"shared geometry, stays at the end", "finish_retreat = N\n", cycle("PROFILE", "TRUE") + away, "G0 Z5."},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.what);
+    const std::string out = post(gpp, start + c.job, std::string("@pre_processor\n") + c.flags + "endp\n");
+    EXPECT_EQ(out.substr(out.rfind('\n') + 1), c.after) << out;
+  }
+}
