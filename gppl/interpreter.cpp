@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "gppl/compile/compiler.hpp"
@@ -174,6 +175,14 @@ void Interpreter::assign_strings(std::span<const VariableId> ids, std::span<cons
 void Interpreter::assign_element(VariableId id, std::span<const int> indices, const Value& value, ChangeOverride change) {
   State& s = *state_;
   const GlobalVariable& var = s.program.globals.at(id);
+  // As in a post (codegen): a system array's trailing indices of 1 may be left out.
+  std::array<int, 8> padded{};
+  if (var.group == Group::System && !indices.empty() && indices.size() < var.dimensions.size() &&
+      var.dimensions.size() <= padded.size()) {
+    std::fill(padded.begin(), padded.end(), 1);
+    std::copy(indices.begin(), indices.end(), padded.begin());
+    indices = std::span<const int>(padded.data(), var.dimensions.size());
+  }
   if (indices.size() != var.dimensions.size())
     throw std::out_of_range(fmt::format("{} has {} dimension(s), {} indices given", var.name, var.dimensions.size(),
                                         indices.size()));

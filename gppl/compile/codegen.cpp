@@ -428,6 +428,11 @@ std::uint32_t Compiler::reference(const SyntaxNode& variable, Context& ctx, bool
   std::vector<std::uint32_t> indices;
   if (variable.children.size() > 1)
     for (const auto& e : variable.children[1]->children) indices.push_back(expression(*e, ctx));
+  // A system array may leave out trailing indices of 1: real posts read SolidCAM's ang_prms both
+  // as ang_prms<<i>> and as ang_prms<<1,1>> (SODICK.GPP of majeretft/Cam-posts), so the shorter
+  // form names the first column (docs/gppl-language.md, "Arrays").
+  if (!undeclared && !ref.local && program_->globals[ref.id].group == Group::System && !indices.empty())
+    while (indices.size() < dim_count) indices.push_back(constant(Value::of_integer(1), pos));
   if (undeclared) {
     // its shape is unknown: the use is refused when it runs, whatever its indices
   } else if (dim_count == 0 && !indices.empty()) error(ErrorCode::OutOfRange, pos, {}, fmt::format("'{}' is not an array", name));

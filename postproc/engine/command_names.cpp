@@ -7,7 +7,7 @@
 namespace postproc {
 namespace {
 
-constexpr std::array<std::string_view, 94> kNames = {
+constexpr std::array<std::string_view, 105> kNames = {
     // gpptool-commands.md
     "@absolute_mode", "@arc", "@arc4x_cartesian", "@arc4x_polar", "@arc_5x", "@call_prms", "@call_proc",
     "@change_ref_point", "@change_tool", "@change_wire", "@chng_tool_cnext", "@compensation", "@def_tool",
@@ -26,6 +26,10 @@ constexpr std::array<std::string_view, 94> kNames = {
     "@job_plane", "@offset_change", "@setup", "@tool_breakage", "@vmid_info",
     // procedures SolidCAM's own Siemens posts define for commands the manual does not list
     "@arc_yz", "@arc_zx", "@loop_matrix_info", "@transform_info",
+    // named by the manual's example posts (gpptool-commands.md 15) and defined by real wire posts
+    // (Chmer.gpp, SODICK.GPP of majeretft/Cam-posts) for the engine to call
+    "@assign_axis", "@end_cartesian", "@job_info", "@programming_mode", "@round_comp", "@start_cartesian",
+    "@wc_angle_status", "@wc_chng_tool", "@wc_info", "@wc_pos", "@wc_pos_pnt",
     // run by the engine itself
     "@init_inc", "@init_post",
     // the controller models' streams (postproc read --dialect)
@@ -46,10 +50,10 @@ bool is_basic_motion(std::string_view name) {
 }
 
 bool is_informational(std::string_view name) {
-  static constexpr std::array<std::string_view, 15> kInformational = {
-      "@def_tool", "@def_turn_tool", "@home_data", "@home_number", "@init_cpos", "@job_plane", "@machine_plane",
-      "@message", "@offset_change", "@rotary_info", "@setup", "@tmatrix", "@tool_breakage", "@tool_path_info",
-      "@vmid_info"};
+  static constexpr std::array<std::string_view, 20> kInformational = {
+      "@def_tool", "@def_turn_tool", "@home_data", "@home_number", "@init_cpos", "@job_info", "@job_plane",
+      "@machine_plane", "@message", "@offset_change", "@rotary_info", "@setup", "@tmatrix", "@tool_breakage",
+      "@tool_path_info", "@vmid_info", "@wc_abs_rel", "@wc_angle_status", "@wc_info", "@wc_program_plane"};
   for (std::string_view n : kInformational)
     if (toolpath::iequals(n, name)) return true;
   return false;

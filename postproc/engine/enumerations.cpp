@@ -55,6 +55,7 @@ Enumerations::Enumerations(const std::vector<std::string>& drill_type_names) {
                  "constant_z", "pencil"},
                 1);
   declare_group({"INTEGER", "NUMERIC", "STRING"}, 1);
+  declare_group({"positive", "negative"}, 1);  // the taper of a wire pass (p_angle)
   // Switch words of a real trace: SolidCAM's posts test `flood_coolant eq 1` for `on` and
   // `eq 0 or eq 2` for the rest (docs/engine.md, "Enumeration words"). Codes only: names as
   // common as `on` or `no` are not made constants a post could collide with.

@@ -13,6 +13,7 @@
 #include "prp/prp.hpp"
 #include "prp/filters/short_line_filter.hpp"
 #include "prp/filters/structure_check.hpp"
+#include "prp/filters/wire_guides.hpp"
 
 namespace prp {
 namespace {
@@ -45,6 +46,7 @@ std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParamet
   if (DrillExpansion::needed(params)) chain->add<DrillExpansion>(params, warn);
   if (!ModeCommands::wanted(params).empty()) chain->add<ModeCommands>(params, warn);
   if (params.logical("init_cpos")) chain->add<InitCpos>();
+  if (WireGuides::needed(params)) chain->add<WireGuides>(params);
   // After the filters that add commands to inline jobs, so that those commands travel with their job.
   if (ProcedureGeneration::needed(params)) chain->add<ProcedureGeneration>(params);
   if (params.has("dflt_start") || params.has("dflt_end")) chain->add<DefaultPositions>(params);

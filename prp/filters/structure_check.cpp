@@ -17,6 +17,7 @@ StructureCheck::StructureCheck(toolpath::CommandSource& input, const MachinePara
       mirror_(p.logical("mirror")),
       software_transform_(p.logical("software_transform")),
       comp_exist_(p.logical("comp_exist")),
+      wire_cut_(p.has("machine_type") && toolpath::iequals(p.text("machine_type"), "WIRE_CUT")),
       turning_cycle_(p.logical("turning_cycle")),
       groove_cycle_(p.logical("groove_cycle")),
       programs_(program_numbers(p)),
@@ -46,11 +47,13 @@ void StructureCheck::check(const toolpath::Command& c, CommandKind kind) {
     if (warn_ && warned_.insert(c.name).second) warn_(c, message);
   };
   switch (kind) {
+    // A wire machine runs each pass of a contour as a call of its subroutine, whatever gen_procs says:
+    // Chmer.vmid (GenProc 0) and SODICK.PRP (gen_procs = Y) both come with posts built on @call_prms.
     case K::call_proc:
-      if (procs_off_) warn("@call_proc although the PRP says gen_procs = N");
+      if (procs_off_ && !wire_cut_) warn("@call_proc although the PRP says gen_procs = N");
       break;
     case K::call_prms:
-      if (!calls_with_parameters_)
+      if (!calls_with_parameters_ && !wire_cut_)
         warn(fmt::format("@call_prms although the PRP says gen_procs = {} (only D calls with parameters)", gen_procs_));
       break;
     case K::loop:

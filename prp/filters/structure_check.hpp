@@ -24,7 +24,7 @@ private:
   WarningSink warn_;
   std::string gen_procs_;
   bool procs_off_, calls_with_parameters_;  // gen_procs N, D
-  bool loop_exist_, rotate_, mirror_, software_transform_, comp_exist_, turning_cycle_, groove_cycle_;
+  bool loop_exist_, rotate_, mirror_, software_transform_, comp_exist_, wire_cut_, turning_cycle_, groove_cycle_;
   NumberRange programs_, procedures_;
   std::optional<std::int64_t> num_homes_;
   std::set<std::string> warned_;  // command names already reported

@@ -1,5 +1,6 @@
 // SolidCAM machine ID files (VMID, XML with the root <Machine>) read into the PRP model: mapped
-// controller attributes become PRP parameters, <DrillCycle>s drill_type records, <UserDefParams>
+// controller attributes become PRP parameters, <DrillCycle>s drill_type records, <WireEdmMacro>s
+// wc_macro records, <UserDefParams>
 // PRP external variables. Everything else (kinematics, devices, simulation data) is skipped.
 #include <algorithm>
 #include <charconv>
@@ -99,8 +100,8 @@ private:
       pugi::xml_node node = stack.back();
       stack.pop_back();
       const std::string_view name = node.name();
-      if (name == "DrillCycle") {
-        drill_cycle(node);
+      if (name == "DrillCycle" || name == "WireEdmMacro") {
+        cycle(node, name == "DrillCycle" ? "drill_type" : "wc_macro");
         continue;
       }
       if (name == "UserDefParams") {
@@ -177,6 +178,10 @@ private:
         loader_.warning_at(p.where, fmt::format("GenProc=\"{}\" is not a code we know (0: N, 1: Y): gen_procs keeps "
                                                 "its default", t));
         return false;
+      case VmidValue::MachineType:
+        if (t != "6") return false;  // milling and the codes we have not seen: no machine_type
+        p.text = "WIRE_CUT";
+        return true;
     }
     return false;
   }
@@ -277,16 +282,20 @@ private:
     return false;
   }
 
-  void drill_cycle(pugi::xml_node node) {
+  // A <DrillCycle> (drill_type) or a wire <WireEdmMacro> (wc_macro, whose word is None as in the
+  // PRPs SolidCAM writes: `wc_macro = P8000 None Y XX YY ...`): a cycle record whose <CycleParams>
+  // each declare a variable.
+  void cycle(pugi::xml_node node, std::string_view key) {
     auto name = gpp_name(node);
     if (!name) return;
     Record r;
-    r.key = "drill_type";
+    r.key = std::string(key);
     r.form = Record::Form::Cycle;
     r.name = *name;
     r.where = r.name_where = at(node.attribute("GppName"), node);
-    pugi::xml_attribute dt = node.attribute("DrillType");
-    if (auto base = vmid_drill_base(dt.value())) {
+    if (key == "wc_macro") {
+      r.base = "None";
+    } else if (pugi::xml_attribute dt = node.attribute("DrillType"); auto base = vmid_drill_base(dt.value())) {
       r.base = std::string(*base);
     } else {
       loader_.warning_at(at(dt, node), fmt::format("DrillType=\"{}\" of `{}`: expected 0 to 6; the cycle has no base "
@@ -315,9 +324,9 @@ private:
     for (const auto& p : params) r.raw += " " + p.name;
     if (!loader_.add_record(std::move(r))) return;
     // Cycle parameters hold the VMID's value (the job dialog's default) but stay inactive until the
-    // toolpath's @drill sets them, as in a PRP.
+    // toolpath's command sets them, as in a PRP.
     for (auto& p : params)
-      if (!loader_.declare(p.name, p.type, std::move(p.initial), "drill_type", p.where)) break;
+      if (!loader_.declare(p.name, p.type, std::move(p.initial), key, p.where)) break;
   }
 
   Loader& loader_;

@@ -35,6 +35,9 @@ constexpr VmidAttribute kAttributes[] = {
     {"ProgramNumbers", "MinProcedureNumber", "proc_num_min", V::Integer},
     {"ProgramNumbers", "MaxProcedureNumber", "proc_num_max", V::Integer},
     {"ProgramNumbers", "DefaultProcedureNumber", "proc_num_dflt", V::Integer},
+    // The machine's kind: Chmer.vmid (majeretft/Cam-posts, a Makino wire machine) says 6 on <Machine>
+    // and on its "Main WireEdm" combination; the milling VMIDs of catinrage/achar say 0.
+    {"Machine", "OperationType", "machine_type", V::MachineType},
     {"CompensationDef", "Compensation", "comp_exist", V::Flag},
     {"CompensationDef", "MinDeltArcRad", "min_delt_arc_rad", V::Length},
     {"TurningDef", "TurningCycle", "turning_cycle", V::Flag},
@@ -112,7 +115,8 @@ ValueKind vmid_kind(VmidValue value) {
     case VmidValue::Number:
     case VmidValue::Length: return ValueKind::Number;
     case VmidValue::Text: return ValueKind::String;
-    case VmidValue::GenProcs: return ValueKind::Enumeration;
+    case VmidValue::GenProcs:
+    case VmidValue::MachineType: return ValueKind::Enumeration;
   }
   return ValueKind::String;
 }

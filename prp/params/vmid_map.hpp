@@ -18,6 +18,7 @@ enum class VmidValue : std::uint8_t {
   Length,    // millimetres: the inch half is the value / 25.4
   Text,      // the attribute's text
   GenProcs,  // ProceduresDef GenProc: 0 -> N, 1 -> Y
+  MachineType,  // Machine OperationType: 6 -> WIRE_CUT (a wire machine); milling (0) sets nothing
 };
 
 struct VmidAttribute {

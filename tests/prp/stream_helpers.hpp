@@ -45,6 +45,7 @@ inline toolpath::Command command(std::string name, std::initializer_list<Pair> p
 
 inline toolpath::Value num(double v) { return toolpath::Value::make_numeric(v); }
 inline toolpath::Value word(const char* w) { return toolpath::Value::make_enum(w); }
+inline toolpath::Value logical(bool b) { return toolpath::Value::make_logical(b); }
 
 inline double get(const toolpath::Command& c, const char* name) {
   const toolpath::Value* v = c.find(name);

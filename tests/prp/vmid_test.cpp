@@ -178,6 +178,36 @@ TEST(Vmid, DrillCyclesBecomeDrillTypeRecords) {
   EXPECT_EQ(p.drill_cycle("Probe_Cycle_Int._Arc"), nullptr);
 }
 
+// A wire machine (the shape of Chmer.vmid, majeretft/Cam-posts): <Machine OperationType="6"> makes
+// machine_type WIRE_CUT, each <WireEdmMacro> a wc_macro record whose parameters are variables, and
+// the job parameters of <WireParamsJobs> (E1, D1, ...) job options.
+TEST(Vmid, WireMachinesTheirMacrosAndJobParameters) {
+  const std::string wire =
+      "<Machine Name=\"W\" OperationType=\"6\"><Controller><WireEdmMacros>"
+      "<WireEdmMacro GppName=\"P8000\" UseCycle=\"0\"><CycleParams>"
+      "<Param GppName=\"XX\" ValueType=\"3\" Value=\"0\"/><Param GppName=\"EE\" ValueType=\"3\" Value=\"33\"/>"
+      "</CycleParams></WireEdmMacro>"
+      "<WireEdmMacro GppName=\"P8001\" UseCycle=\"1\"><CycleParams><Param GppName=\"XX\" ValueType=\"3\" Value=\"0\"/>"
+      "</CycleParams></WireEdmMacro></WireEdmMacros>"
+      "<UserDefParams><WireParamsJobs><ParamJobs GppName=\"E1\" ValueType=\"3\" Value=\"0\"/></WireParamsJobs>"
+      "</UserDefParams></Controller></Machine>";
+  auto p = prp::load_source(wire, "w.vmid", Units::Metric);
+  EXPECT_EQ(p.text("machine_type"), "WIRE_CUT");
+  std::vector<std::string> got;
+  for (const auto* r : p.records("wc_macro")) {
+    std::string line = r->name + " " + r->base + " " + (*r->flag ? "Y" : "N");
+    for (const auto& param : r->params) line += " " + param;
+    got.push_back(line);
+  }
+  EXPECT_EQ(got, (std::vector<std::string>{"P8000 None N XX EE", "P8001 None Y XX"}));
+  ASSERT_NE(external(p, "EE"), nullptr);
+  EXPECT_EQ(external(p, "EE")->declared_by, "wc_macro");
+  ASSERT_NE(external(p, "E1"), nullptr);
+  EXPECT_EQ(external(p, "E1")->declared_by, "job_opt_type");
+  // A milling machine says 0: no machine_type.
+  EXPECT_FALSE(prp::load_source("<Machine OperationType=\"0\"/>", "m.vmid", Units::Metric).has("machine_type"));
+}
+
 // The canonical PRP text of a VMID's model loads back to the same parameters, records and variable
 // types: the VMID is a PRP in another notation. Two things have no PRP form: the VMID's initial
 // values, and cycle parameters of a type other than numeric (a PRP declares them all numeric).

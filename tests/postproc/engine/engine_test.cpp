@@ -312,3 +312,19 @@ TEST_F(EngineTest, LatheCyclesLeaveTheToolWhereTheRetreatFlagsSay) {
     EXPECT_EQ(out.substr(out.rfind('\n') + 1), c.after) << out;
   }
 }
+
+// A system array may leave out trailing indices of 1, in the post and in the trace, because real
+// wire posts read ang_prms both ways (docs/gppl-language.md, "Arrays"); a post's own arrays may not.
+TEST_F(EngineTest, SystemArraysMayLeaveOutTrailingIndicesOfOne) {
+  const std::string gpp =
+      "@wc_line\n  {nl, ang_prms<<1>>, ' ', ang_prms<<1,1>>, ' ', ang_prms<<2>>, ' ', ang_prms<<2,2>>}\nendp\n";
+  const std::string trace =
+      "@start_of_file\n@wc_line\nang_prms<<1,1>> : 2.5\nang_prms<<2>> : 1.5\nang_prms<<2,2>> : 0.5\n";
+  EXPECT_EQ(post(gpp, trace), "\n2.5 2.5 1.5 0.5");
+  try {
+    post("@start_of_file\n  global numeric mine<<4,2>>\n  {nl, mine<<1>>}\nendp\n", "@start_of_file\n");
+    ADD_FAILURE() << "a post's own array took one index for two";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("array 'mine' has 2 dimension(s)"), std::string::npos) << e.what();
+  }
+}
