@@ -115,6 +115,11 @@ bool ProcedureGeneration::collect() {
     }
     const std::int64_t at = bodies_->write(c);
     if (!c.is_stream_command()) continue;
+    // Turning geometry bodies share the label space of subroutines (a cycle's start_line/end_line
+    // names its body by label): the jobs' subroutines take other numbers.
+    if (kind == K::turning || (kind == K::other && (toolpath::iequals(c.name, "@turn_proc") ||
+                                                    toolpath::iequals(c.name, "@thread"))))
+      if (auto l = number(c, "label"); l && *l > 0) geometry_labels_.insert(static_cast<std::int64_t>(*l));
     if (leading && has(kToolChange, kind)) {
       ++job.tools;
       if (const toolpath::Value* t = c.find("tool_number"); t && !job.tool_number) job.tool_number = *t;
@@ -161,6 +166,7 @@ void ProcedureGeneration::assign_labels() {
 
   std::int64_t label = first_label_;
   auto take = [&](std::size_t index_for_errors) {
+    while (geometry_labels_.count(label)) ++label;
     if (!range_.contains(label)) {
       toolpath::Command at;
       at.name = "@proc";

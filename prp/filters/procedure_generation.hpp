@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <deque>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,7 @@ private:
   std::vector<Job> jobs_;
   std::vector<Cycle> cycles_;
   std::vector<std::size_t> shared_;  // cycles that own a shared point list, in label order
+  std::set<std::int64_t> geometry_labels_;  // labels of the stream's turning geometry: not for jobs
   std::int64_t last_label_ = 0;
   std::deque<toolpath::Command> queue_;  // a handful of commands to hand out first
   toolpath::Command held_;               // a command read ahead in the pass-through phase

@@ -143,6 +143,33 @@ TEST(Generation, StructuredToolpathPassesUnchanged) {
   EXPECT_EQ(run("gen_procs = Y\n", {}), std::vector<std::string>{});
 }
 
+// A cycle names its turning geometry by label, in the same label space as subroutines: the jobs'
+// subroutines take the numbers the stream's geometry does not use (labels 7 and 9 here).
+TEST(Generation, JobsSkipTheLabelsOfTurningGeometry) {
+  std::vector<Command> in{command("@start_of_file", {}),
+                          command("@start_of_job", {{"job_name", text("ROUGH")}}),
+                          command("@turning", {{"label", num(7)}}),
+                          command("@turn_proc", {{"label", num(7)}}),
+                          command("@line", {{"xpos", num(2)}}),
+                          command("@turn_endproc", {{"label", num(7)}}),
+                          command("@end_of_job", {}),
+                          command("@start_of_job", {{"job_name", text("THREAD")}}),
+                          command("@thread", {{"label", num(9)}}),
+                          command("@end_of_job", {}),
+                          command("@start_of_job", {{"job_name", text("FACE")}}),
+                          command("@line", {{"xpos", num(3)}}),
+                          command("@end_of_job", {}),
+                          command("@end_program", {}),
+                          command("@end_of_file", {})};
+  for (std::size_t i = 0; i < in.size(); ++i) in[i].index = i;
+  std::vector<std::string> calls;
+  for (const auto& line : run("gen_procs = Y\n", in))
+    if (line.rfind("@call_proc", 0) == 0) calls.push_back(line);
+  EXPECT_EQ(calls, (std::vector<std::string>{"@call_proc #1 label=8 message=ROUGH job_name=ROUGH",
+                                             "@call_proc #7 label=10 message=THREAD job_name=THREAD",
+                                             "@call_proc #10 label=11 message=FACE job_name=FACE"}));
+}
+
 std::string error_of(const std::string& settings, std::vector<Command> in) {
   try {
     run(settings, std::move(in));
