@@ -11,6 +11,7 @@
 #include "prp/filters/precision_filter.hpp"
 #include "prp/filters/procedure_generation.hpp"
 #include "prp/prp.hpp"
+#include "prp/filters/rotary_axes.hpp"
 #include "prp/filters/short_line_filter.hpp"
 #include "prp/filters/structure_check.hpp"
 #include "prp/filters/wire_guides.hpp"
@@ -45,6 +46,7 @@ std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParamet
   if (CompensationCheck::needed(params)) chain->add<CompensationCheck>(params.numeric("min_delt_arc_rad"), warn);
   if (DrillExpansion::needed(params)) chain->add<DrillExpansion>(params, warn);
   if (!ModeCommands::wanted(params).empty()) chain->add<ModeCommands>(params, warn);
+  chain->add<RotaryAxes>(params, warn);
   if (params.logical("init_cpos")) chain->add<InitCpos>();
   if (WireGuides::needed(params)) chain->add<WireGuides>(params);
   // After the filters that add commands to inline jobs, so that those commands travel with their job.
