@@ -5,6 +5,8 @@
 //   @delay                     a dwell of delay_period seconds
 //   @change_tool               spindle stop, the tool, the spindle start (tool_direction, spin), then a
 //                              rapid to xnext ynext at the current height and down to znext
+//   @turn_change_tool          the same on a lathe (spin_direction), then a rapid to xnext znext in
+//                              one move
 //   @start_tool / @stop_tool   spindle on / off;  @m_feed_spin, @feed_spin: a new spindle speed
 //   @drill ... @end_drill      the canned cycle, hole by hole (drilling, peck, tapping)
 //   @end_program               spindle stop, lift to the end height, then the end position in X Y
@@ -67,6 +69,7 @@ public:
       return emit(m);
     }
     if (is(c, "@change_tool")) return change_tool(c);
+    if (is(c, "@turn_change_tool")) return turn_change_tool(c);
     if (is(c, "@start_tool")) return spindle(c, direction(c), number_or(c, "spin", 0.0));
     if (is(c, "@stop_tool")) return spindle(c, 0, 0.0);
     if (is(c, "@m_feed_spin") || is(c, "@feed_spin")) {
@@ -182,6 +185,22 @@ private:
       Eigen::Vector3d p = position_;
       p.z() = *zn * scale_;
       move(c, MotionKind::Rapid, p, 0.0, {false, false, true});
+    }
+  }
+
+  void turn_change_tool(const Command& c) {
+    spindle(c, 0, 0.0);
+    Motion t = base(c, MotionKind::Tool);
+    const double tool = number_or(c, "tool_number", 0);
+    t.tool = std::abs(tool) <= 1e15 ? static_cast<std::int64_t>(tool) : -1;
+    emit(t);
+    if (double s = number_or(c, "spin", 0.0); s > 0) spindle(c, iequals(word(c, "spin_direction"), "CCW") ? -1 : 1, s);
+    auto xn = number(c, "xnext"), zn = number(c, "znext");
+    if (xn && zn) {
+      Eigen::Vector3d p = position_;
+      p.x() = *xn * scale_;
+      p.z() = *zn * scale_;
+      move(c, MotionKind::Rapid, p, 0.0, {true, false, true});
     }
   }
 
