@@ -10,6 +10,7 @@ namespace machines {
 
 struct PostTemplate {
   std::string_view name;     // "fanuc": the --template value and the folder under machines/
+  std::string_view sample_job;  // "sample-job": docs/examples/<sample_job>.trace posts through it
   std::string_view summary;  // the controllers it is written for
   std::string_view gpp;      // the post
   std::string_view prp;      // its machine file

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 std::string template_list() {
   std::string list;
-  for (const auto& t : machines::post_templates()) list += fmt::format("  {:<11}{}\n", t.name, t.summary);
+  for (const auto& t : machines::post_templates()) list += fmt::format("  {:<13}{}\n", t.name, t.summary);
   return list;
 }
 
@@ -56,8 +56,10 @@ int run_new_post(const Arguments& args, std::ostream& out, std::ostream& err) {
   out << fmt::format(
       "wrote {} and {} ({} template)\n"
       "next: postproc check {} --prp {}\n"
-      "      postproc run --post {} --prp {} JOB.trace -o OUT_DIR\n",
-      gpp.string(), prp.string(), t->name, gpp.string(), prp.string(), gpp.string(), prp.string());
+      "      postproc run --post {} --prp {} docs/examples/{}.trace -o OUT_DIR\n"
+      "      (docs/examples/{}.trace of the postproc sources is the job its tests post)\n",
+      gpp.string(), prp.string(), t->name, gpp.string(), prp.string(), gpp.string(), prp.string(), t->sample_job,
+      t->sample_job);
   (void)err;
   return kOk;
 }
@@ -70,7 +72,7 @@ Subcommand new_post_command() {
       "postproc new-post --template NAME [--name POST] [-o DIR] [--force] | --list",
       "Write a documented starter post and machine file for a common controller.",
       {
-          {"--template", "-t", true, "the controller family: fanuc, linuxcnc, grbl, sinumerik (--list describes them)"},
+          {"--template", "-t", true, "the machine: fanuc, linuxcnc, grbl, sinumerik, fanuc-lathe, mill-turn, wire-edm (--list describes them)"},
           {"--name", "", true, "the new post's name: files POST.gpp and POST.prp (default: the template's name)"},
           {"--output", "-o", true, "the folder to write them in (default: the current folder; created when missing)"},
           {"--force", "", false, "replace files that already exist"},

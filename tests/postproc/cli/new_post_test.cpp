@@ -1,5 +1,6 @@
 // `postproc new-post`: each template is a shipped post written out as it is in machines/, its
-// machine file renamed with the post, and what it writes passes `check` and posts the sample job.
+// machine file renamed with the post, and what it writes passes `check` and posts its sample job
+// (the milling sample job, or the turning, mill-turn or wire job; GRBL's is the one it can cut).
 // Runs from tests/ (the suite's working directory).
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -30,7 +31,7 @@ protected:
 };
 
 TEST_F(NewPost, EveryTemplateIsTheShippedPostAndRunsOnTheSampleJob) {
-  ASSERT_EQ(machines::post_templates().size(), 4u);
+  ASSERT_EQ(machines::post_templates().size(), 7u);
   for (const auto& t : machines::post_templates()) {
     const std::string name(t.name);
     SCOPED_TRACE(name);
@@ -42,9 +43,10 @@ TEST_F(NewPost, EveryTemplateIsTheShippedPostAndRunsOnTheSampleJob) {
     const auto checked = run_cli({"check", gpp.string(), prp.string()});
     EXPECT_EQ(checked.code, 0) << checked.err;
     EXPECT_EQ(checked.err.find("warning"), std::string::npos) << checked.err;
-    if (name == "grbl") continue;  // no cutter compensation: the sample job is refused (test below)
-    const auto posted = run_cli({"run", "-q", "--post", gpp.string(), "--prp", prp.string(),
-                                 "../docs/examples/sample-job.trace", "-o", (dir / "nc").string() + "/"});
+    const std::string job = "../docs/examples/" + std::string(t.sample_job) + ".trace";
+    EXPECT_NE(wrote.out.find(std::string(t.sample_job) + ".trace"), std::string::npos) << wrote.out;
+    const auto posted = run_cli({"run", "-q", "--post", gpp.string(), "--prp", prp.string(), job, "-o",
+                                 (dir / ("nc-" + name)).string() + "/"});
     EXPECT_EQ(posted.code, 0) << posted.err;
     EXPECT_EQ(posted.err, "");
   }
