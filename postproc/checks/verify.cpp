@@ -1,4 +1,4 @@
-// `postproc verify`: the NC side (the PikoCNC model's motion), normalisation and comparison.
+// `postproc verify`: the NC side (a controller model's motion), normalisation and comparison.
 #include "postproc/checks/verify.hpp"
 
 #include <cmath>
@@ -8,7 +8,6 @@
 #include <Eigen/Geometry>  // cross(): declared in Core, defined here (Release builds fail to link without it)
 #include <fmt/format.h>
 
-#include "machines/pikocnc/reader.hpp"
 #include "toolpath/value.hpp"
 
 namespace postproc::verify {
@@ -30,12 +29,9 @@ std::string word(const Command& c, std::string_view name) {
 
 class NcMotion final : public MotionSource {
 public:
-  explicit NcMotion(const std::filesystem::path& program) {
-    pikocnc::Options options;
-    options.dialect = pikocnc::Dialect::V2025;
-    options.comments_as_messages = false;
-    options.cutter_compensation = false;  // the toolpath is the programmed contour
-    reader_ = pikocnc::PikoReader::open(program.string(), options);
+  NcMotion(std::unique_ptr<machines::ProgramSource> reader, const machines::VerifyProfile& profile)
+      : reader_(std::move(reader)), profile_(profile) {
+    started_ = profile.planar_speeds;  // a planar program starts at its origin, X0 Y0
   }
 
   bool next(Motion& out) override {
@@ -55,7 +51,15 @@ private:
     if (iequals(c.name, "@rapid_move") || iequals(c.name, "@line")) {
       m.kind = iequals(c.name, "@line") ? MotionKind::Feed : MotionKind::Rapid;
       m.feed = m.kind == MotionKind::Feed ? number_or(c, "feed", 0.0) : 0.0;
+      if (profile_.planar_speeds && m.kind == MotionKind::Rapid) {  // back to X0 Y0: at full machine speed
+        m.kind = MotionKind::Feed;
+        m.feed = profile_.machine_speed;
+      }
       return moved(m, to);
+    }
+    if (iequals(c.name, "@home")) {  // homing sets the origin again: no motion to compare
+      if (c.find("xpos")) position_ = Eigen::Vector3d::Zero();
+      return false;
     }
     if (iequals(c.name, "@arc")) {
       m.kind = MotionKind::Arc;
@@ -90,7 +94,8 @@ private:
       m.speed = number_or(c, "spin", 0.0);
       return true;
     }
-    if (iequals(c.name, "@thread_move") || iequals(c.name, "@macro") || iequals(c.name, "@probe")) {
+    if (iequals(c.name, "@thread_move") || iequals(c.name, "@macro") || iequals(c.name, "@probe") ||
+        iequals(c.name, "@a_move")) {
       m.kind = MotionKind::Other;
       return true;
     }
@@ -106,7 +111,8 @@ private:
     return true;
   }
 
-  std::unique_ptr<pikocnc::PikoReader> reader_;
+  std::unique_ptr<machines::ProgramSource> reader_;
+  machines::VerifyProfile profile_;
   Command command_;
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
   bool started_ = false;  // the first move's start is the controller's, not the program's
@@ -238,7 +244,14 @@ std::string difference(const Motion& a, const Motion& b, const Tolerances& given
 
 }  // namespace
 
-std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program) { return std::make_unique<NcMotion>(program); }
+std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program, const machines::Controller& controller,
+                                        std::string_view dialect, const machines::ReadOptions& options,
+                                        std::ostream& warnings) {
+  machines::ReadOptions read = options;
+  read.for_verify = true;
+  return std::make_unique<NcMotion>(controller.open(program.string(), dialect, read, warnings),
+                                    controller.verify_profile(read));
+}
 
 std::unique_ptr<MotionSource> normalised(MotionSource& source, const Tolerances& tolerances) {
   return std::make_unique<Normalised>(source, tolerances);

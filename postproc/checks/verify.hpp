@@ -1,6 +1,6 @@
-// Closed-loop verification (`postproc verify`): a job is posted with a PikoCNC post, the NC program
-// is read back with the PikoCNC controller model, and the motion it makes is compared with the
-// motion of the toolpath the post received (after the PRP filters). docs/pikocnc.md, "verify".
+// Closed-loop verification (`postproc verify`): a job is posted, the NC program is read back with
+// a controller model of the registry (machines/registry/), and the motion it makes is compared with
+// the motion of the toolpath the post received (after the PRP filters). docs/pikocnc.md, "verify".
 //
 // Both sides become the same kind of events (rapid, feed, arc, dwell, tool, spindle), normalised
 // alike: moves shorter than the tolerance are dropped, consecutive collinear moves of one kind and
@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include "machines/registry/controller.hpp"
 #include "postproc/engine/engine.hpp"
 #include "toolpath/command.hpp"
 #include "toolpath/geometry.hpp"
@@ -79,27 +80,17 @@ private:
   std::unique_ptr<Data> data_;
 };
 
-// The NC side: the motion the PikoCNC model makes for an NC program (dialect 2025, cutter radius
-// compensation off: the programmed path is compared). Events carry their NC line.
-std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program);
+// The NC side: the motion a controller's model makes for an NC program, read for verify (the
+// programmed path: cutter compensation off). Events carry their NC line. The model's warnings go to
+// `warnings` when the program ends; its errors are thrown (toolpath::InputError).
+std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program, const machines::Controller& controller,
+                                        std::string_view dialect, const machines::ReadOptions& options,
+                                        std::ostream& warnings);
 
-// The controller a verified post writes for. A 2XAxisCNC program has no Z, no arcs, no tools and
-// speed coefficients instead of feeds (docs/2xaxiscnc.md, "verify"): its motion is compared in X Y,
-// every straight move as a feed at coefficient x machine_speed.
-struct Target {
-  enum class Kind { PikoCnc, TwoAxisCnc };
-  Kind kind = Kind::PikoCnc;
-  double machine_speed = 3000.0;   // mm/min at coefficient 1 (the 2XAxisCNC post's machine_speed)
-  double rapid_coefficient = 1.0;  // the post's rapid_coef
-};
-
-// The NC side of a 2XAxisCNC program (verify_twoaxis.cpp). Errors in the program are thrown as
-// toolpath::InputError when the program ends.
-std::unique_ptr<MotionSource> twoaxis_nc_motion(const std::filesystem::path& program, const Target& target);
-// The toolpath side as a 2XAxisCNC machine can make it: moves projected on X Y from the program
-// origin, feeds turned into coefficients as the post rounds them, tool changes dropped, the spindle
-// only on or off. `source` must outlive the result.
-std::unique_ptr<MotionSource> twoaxis_expected(MotionSource& source, const Target& target);
+// The toolpath side as a machine of VerifyProfile::planar_speeds makes it (verify_planar.cpp):
+// moves projected on X Y from the program origin, feeds turned into the speeds the post writes, tool
+// changes dropped, the spindle only on or off. `source` must outlive the result.
+std::unique_ptr<MotionSource> planar_expected(MotionSource& source, const machines::VerifyProfile& profile);
 
 // Drops moves shorter than the tolerance, joins collinear moves, drops spindle events that change
 // nothing. `source` must outlive the result.
@@ -134,8 +125,10 @@ struct JobReport {
 // `keep_program` when given, else to a temporary folder that is removed. Throws what the engine and
 // the readers throw (errors in the inputs). The stream's warnings (RunOptions::warnings) go to
 // `warnings` when given.
+// The NC program is read with `controller` as `dialect` (one of its names); `read.answers` are the
+// run's answers, for a controller whose program depends on them.
 JobReport verify_job(const Engine& engine, const std::string& job, const Tolerances& tolerances,
-                     const std::optional<std::filesystem::path>& keep_program = std::nullopt,
-                     const Target& target = {}, std::ostream* warnings = nullptr);
+                     const std::optional<std::filesystem::path>& keep_program, const machines::Controller& controller,
+                     std::string_view dialect, const machines::ReadOptions& read, std::ostream* warnings = nullptr);
 
 }  // namespace postproc::verify

@@ -1,6 +1,7 @@
 // `postproc verify`: post a job, read its NC program back, compare (postproc/checks/verify.hpp).
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -47,7 +48,8 @@ std::string line_of(const std::filesystem::path& file, std::size_t number) {
 }  // namespace
 
 JobReport verify_job(const Engine& engine, const std::string& job, const Tolerances& tolerances,
-                     const std::optional<std::filesystem::path>& keep_program, const Target& target, std::ostream* warnings) {
+                     const std::optional<std::filesystem::path>& keep_program, const machines::Controller& controller,
+                     std::string_view dialect, const machines::ReadOptions& read, std::ostream* warnings) {
   TemporaryFolder folder;
   std::filesystem::path main_file;
   ExpectedMotion expected(engine.machine());
@@ -69,15 +71,16 @@ JobReport verify_job(const Engine& engine, const std::string& job, const Toleran
   }
   JobReport report;
   report.program = main_file;
-  std::unique_ptr<MotionSource> owned_expected;  // under the 2XAxisCNC projection
+  std::unique_ptr<MotionSource> owned_expected;  // under a planar projection
   if (keep_program) {
     std::filesystem::copy_file(main_file, *keep_program, std::filesystem::copy_options::overwrite_existing);
     report.program = *keep_program;
   }
   auto expected_raw = expected.motion();
-  const bool twoaxis = target.kind == Target::Kind::TwoAxisCnc;
-  auto actual_raw = twoaxis ? twoaxis_nc_motion(main_file, target) : nc_motion(main_file);
-  if (twoaxis) expected_raw = twoaxis_expected(*(owned_expected = std::move(expected_raw)), target);
+  std::ostringstream discarded;  // the model's warnings, when the caller takes none
+  auto actual_raw = nc_motion(main_file, controller, dialect, read, warnings ? *warnings : discarded);
+  if (const machines::VerifyProfile profile = controller.verify_profile(read); profile.planar_speeds)
+    expected_raw = planar_expected(*(owned_expected = std::move(expected_raw)), profile);
   auto expected_motion = normalised(*expected_raw, tolerances);
   auto actual_motion = normalised(*actual_raw, tolerances);
   report.result = compare(*expected_motion, *actual_motion, tolerances);

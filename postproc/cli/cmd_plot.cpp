@@ -13,6 +13,7 @@
 
 #include "postproc/cli/cli.hpp"
 #include "postproc/cli/cli_support.hpp"
+#include "machines/registry/registry.hpp"
 #include "postproc/cli/open_input.hpp"
 #include "toolpath/command.hpp"
 #include "toolpath/error.hpp"
@@ -157,9 +158,15 @@ private:
   Bounds bounds_;
 };
 
+// A trace by its extension; any other file is NC code of the registry's default controller.
 std::string default_dialect(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
-  return ext == ".trace" || ext == ".txt" ? "trace" : "pikocnc";
+  return ext == ".trace" || ext == ".txt" ? "trace" : std::string(machines::default_controller().names().front());
+}
+
+std::string_view plot_dialect_help() {
+  static const std::string help = dialect_help("input format (default: .trace and .txt a trace, else G-code)");
+  return help;
 }
 
 int run_plot(const Arguments& args, std::ostream& out, std::ostream& err) {
@@ -185,7 +192,7 @@ Subcommand plot_command() {
       "Draw the toolpath in XY as SVG (rapids dashed, feed moves solid).",
       {
           {"--output", "-o", true, "the SVG file to write (written to a temporary name, then renamed)"},
-          {"--dialect", "", true, "input format: trace, pikocnc, pikocnc-2016, 2xaxiscnc (default: by extension, .trace or G-code)"},
+          {"--dialect", "", true, plot_dialect_help()},
       },
       run_plot,
   };

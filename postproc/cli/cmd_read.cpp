@@ -6,8 +6,7 @@
 #include <memory>
 #include <ostream>
 
-#include "machines/2xaxiscnc/reader.hpp"
-#include "machines/pikocnc/reader.hpp"
+#include "machines/registry/registry.hpp"
 #include "postproc/cli/cli.hpp"
 #include "postproc/cli/open_input.hpp"
 #include "postproc/engine/parameter_check.hpp"
@@ -15,39 +14,6 @@
 #include "toolpath/trace_writer.hpp"
 
 namespace postproc::cli {
-
-namespace {
-
-// A 2XAxisCNC program: every diagnostic is printed when the stream ends; errors (the frames were
-// skipped or clamped) then fail the command with the first error's position.
-std::unique_ptr<toolpath::CommandSource> open_twoaxis(const std::string& path, std::ostream& warnings) {
-  struct Reporting final : toolpath::CommandSource {
-    std::unique_ptr<twoaxis::TwoAxisReader> reader;
-    std::ostream& warnings;
-    Reporting(std::unique_ptr<twoaxis::TwoAxisReader> r, std::ostream& w) : reader(std::move(r)), warnings(w) {}
-    bool next(toolpath::Command& out) override {
-      if (reader->next(out)) return true;
-      const twoaxis::Diagnostic* first_error = nullptr;
-      for (const auto& d : reader->diagnostics()) {
-        const bool error = d.severity == twoaxis::Diagnostic::Severity::Error;
-        if (error && !first_error) first_error = &d;
-        warnings << fmt::format("{}:{}:{}: {}: {}\n", d.file.empty() ? reader->file_name() : d.file, d.line, d.column,
-                                error ? "error" : "warning", d.message);
-      }
-      const std::size_t hidden = reader->diagnostic_count() - reader->diagnostics().size();
-      if (hidden > 0) warnings << fmt::format("{}: {} more diagnostics not shown\n", reader->file_name(), hidden);
-      if (reader->error_count() > 0) {
-        const auto& e = first_error ? *first_error : reader->diagnostics().front();
-        throw toolpath::InputError({e.file.empty() ? reader->file_name() : e.file, e.line, e.column},
-                                   fmt::format("{} error(s) in the program; the first: {}", reader->error_count(), e.message));
-      }
-      return false;
-    }
-  };
-  return std::make_unique<Reporting>(twoaxis::TwoAxisReader::open(path), warnings);
-}
-
-}  // namespace
 
 std::unique_ptr<toolpath::CommandSource> open_source(const std::string& path, const std::string& dialect,
                                                      std::ostream& warnings, bool nc_lines) {
@@ -63,28 +29,21 @@ std::unique_ptr<toolpath::CommandSource> open_source(const std::string& path, co
     };
     return std::make_unique<Checked>(toolpath::TraceReader::open(path), path, warnings);
   }
-  if (dialect == "2xaxiscnc") return open_twoaxis(path, warnings);
-  const auto piko = pikocnc::parse_dialect(dialect);
-  if (!piko)
-    throw UsageError{"unknown dialect `" + dialect + "` (known: trace, pikocnc, pikocnc-2016, pikocnc-2025, 2xaxiscnc)"};
-  pikocnc::Options options;
-  options.dialect = *piko;
+  const machines::Controller* controller = machines::find_controller(dialect);
+  if (!controller)
+    throw UsageError{"unknown dialect `" + dialect + "` (known: trace, " + machines::controller_names() + ")"};
+  machines::ReadOptions options;
   options.nc_lines_in_trace = nc_lines;
-  struct Reporting final : toolpath::CommandSource {
-    std::unique_ptr<pikocnc::PikoReader> reader;
-    std::ostream& warnings;
-    Reporting(std::unique_ptr<pikocnc::PikoReader> r, std::ostream& w) : reader(std::move(r)), warnings(w) {}
-    bool next(toolpath::Command& out) override {
-      if (reader->next(out)) return true;
-      const auto& d = reader->diagnostics();
-      for (const auto& x : d.kept())
-        warnings << fmt::format("{}:{}:{}: warning: {}\n", reader->file_name(), x.line, x.column, x.message);
-      if (d.total() > d.kept().size())
-        warnings << fmt::format("{}: {} more warnings not shown\n", reader->file_name(), d.total() - d.kept().size());
-      return false;
-    }
-  };
-  return std::make_unique<Reporting>(pikocnc::PikoReader::open(path, options), warnings);
+  return controller->open(path, dialect, options, warnings);
+}
+
+std::string dialect_help(std::string_view what) {
+  return fmt::format("{}: trace, {}", what, machines::controller_names());
+}
+
+std::string_view input_help() {
+  static const std::string help = dialect_help("input format (default trace)");
+  return help;
 }
 
 namespace {
@@ -119,7 +78,7 @@ Subcommand read_command() {
       "postproc read [--dialect NAME] [--summary] FILE",
       "Read a command stream (or NC code) and print it in canonical trace form.",
       {
-          {"--dialect", "", true, "input format: trace (default), pikocnc (= pikocnc-2025), pikocnc-2016, 2xaxiscnc"},
+          {"--dialect", "", true, input_help()},
           {"--summary", "", false, "print the number of commands of each kind instead"},
           {"--nc-lines", "", false, "G-code input: attach each NC line to the first command it produced"},
       },

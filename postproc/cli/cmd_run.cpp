@@ -64,7 +64,7 @@ int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
 Subcommand run_command() {
   std::vector<OptionSpec> options = engine_option_specs();
   options.push_back({"-o", "", true, "output: - (stdout, the default), a folder, or the main file"});
-  options.push_back({"--dialect", "", true, "input format: trace (default), pikocnc (= pikocnc-2025), pikocnc-2016, 2xaxiscnc"});
+  options.push_back({"--dialect", "", true, input_help()});
   options.push_back({"--crlf", "", false, "end lines with CR LF (as SolidCAM on Windows) instead of LF"});
   options.push_back({"--quiet", "-q", false, "no progress bar, no summary and no `input` log lines"});
   return {

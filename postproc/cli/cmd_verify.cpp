@@ -1,10 +1,12 @@
-// `postproc verify --post P.gpp [--prp P.prp] JOB.trace`: posts a job with a PikoCNC post, reads
-// the NC program back with the PikoCNC model and compares the motion with the toolpath.
+// `postproc verify --post P.gpp [--prp P.prp] [--dialect NAME] JOB.trace`: posts a job, reads the
+// NC program back with the controller model the post writes for (the registry's, PikoCNC by
+// default) and compares the motion with the toolpath.
 #include <fmt/format.h>
 
 #include <ostream>
 #include <string>
 
+#include "machines/registry/registry.hpp"
 #include "postproc/cli/cli.hpp"
 #include "postproc/cli/cli_support.hpp"
 #include "postproc/checks/verify.hpp"
@@ -25,25 +27,23 @@ double positive_number(const Arguments& args, std::string_view option, double fa
   throw UsageError{fmt::format("{} needs a positive number, not `{}`", option, text)};
 }
 
-// The controller the post writes for. A 2XAxisCNC post's machine speed and rapid coefficient are
-// its `input` answers machine_speed and rapid_coef (the post's defaults otherwise).
-verify::Target verify_target(const std::string& dialect, const EngineOptions& engine) {
-  verify::Target t;
-  if (dialect == "pikocnc" || dialect == "pikocnc-2025") return t;
-  if (dialect != "2xaxiscnc") throw UsageError{"verify knows the dialects pikocnc and 2xaxiscnc, not `" + dialect + "`"};
-  t.kind = verify::Target::Kind::TwoAxisCnc;
-  for (const auto& a : engine.answers) {
-    double* field = toolpath::iequals(a.name, "machine_speed") ? &t.machine_speed
-                    : toolpath::iequals(a.name, "rapid_coef")  ? &t.rapid_coefficient
-                                                               : nullptr;
-    if (!field) continue;
-    try {
-      *field = std::stod(a.value);
-    } catch (const std::exception&) {
-      // the post rejects the answer itself, naming its input statement
-    }
-  }
-  return t;
+// The controller the post writes for, from the registry; the run's answers go with it (a
+// 2XAxisCNC program depends on the application's machine speed, which the post asks for).
+const machines::Controller& verify_controller(const std::string& dialect) {
+  if (const machines::Controller* c = machines::find_controller(dialect)) return *c;
+  throw UsageError{"verify knows the controllers " + machines::controller_names() + ", not `" + dialect + "`"};
+}
+
+machines::ReadOptions read_options(const EngineOptions& engine) {
+  machines::ReadOptions read;
+  for (const auto& a : engine.answers) read.answers.emplace_back(a.name, a.value);
+  return read;
+}
+
+std::string_view verify_dialect_help() {
+  static const std::string help = fmt::format("the controller of the post: {} (default {})", machines::controller_names(),
+                                              machines::default_controller().names().front());
+  return help;
 }
 
 void print_side(std::ostream& out, std::string_view label, const std::optional<verify::Motion>& m) {
@@ -59,15 +59,15 @@ int run_verify(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (args.has("--nc")) keep = args.value("--nc");
 
   const std::string& job = args.positional()[0];
-  const verify::Target target = verify_target(args.value("--dialect", "pikocnc"), engine_opts);
+  const std::string dialect = args.value("--dialect", std::string(machines::default_controller().names().front()));
+  const machines::Controller& controller = verify_controller(dialect);
   Engine engine(engine_opts);
   print_machine_warnings(engine, err);  // before posting, as `run` does
-  verify::JobReport report = verify::verify_job(engine, job, tolerances, keep, target, &err);
+  verify::JobReport report = verify::verify_job(engine, job, tolerances, keep, controller, dialect,
+                                                read_options(engine_opts), &err);
   const auto& r = report.result;
   // Say which controller model read the NC: a post for another controller is not verified by it.
-  const std::string model = target.kind == verify::Target::Kind::TwoAxisCnc
-                                ? "the 2XAxisCNC model (--dialect 2xaxiscnc)"
-                                : "the PikoCNC model (--dialect pikocnc)";
+  const std::string model = fmt::format("the {} model (--dialect {})", controller.title(), dialect);
   if (!r.divergence) {
     if (!args.has("--quiet")) out << fmt::format("{}: ok, {} motion events match; NC read by {}\n", job, r.compared, model);
     return kOk;
@@ -91,10 +91,10 @@ Subcommand verify_command() {
   options.push_back({"--tolerance", "", true, "mm by which positions, centres and radii may differ (default 0.001)"});
   options.push_back({"--nc", "", true, "also write the NC program that was read back to this file"});
   options.push_back({"--quiet", "-q", false, "print nothing when the motion matches"});
-  options.push_back({"--dialect", "", true, "the controller of the post: pikocnc (default) or 2xaxiscnc"});
+  options.push_back({"--dialect", "", true, verify_dialect_help()});
   return {
       "verify",
-      "postproc verify --post P.gpp [--prp P.prp] [--dialect pikocnc|2xaxiscnc] [--tolerance MM] [--nc FILE] JOB.trace",
+      "postproc verify --post P.gpp [--prp P.prp] [--dialect NAME] [--tolerance MM] [--nc FILE] JOB.trace",
       "Post a job with a PikoCNC (or 2XAxisCNC) post, read the NC back with the controller model, compare the motion.",
       options,
       run_verify,

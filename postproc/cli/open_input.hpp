@@ -1,10 +1,11 @@
 // Opens an input of `read`, `plot`, ...: a `.trace` stream or NC code read back by a controller
-// model (`--dialect pikocnc`, `--dialect 2xaxiscnc`). Implemented in cmd_read.cpp.
+// model of the registry (`--dialect NAME`, machines/registry/). Implemented in cmd_read.cpp.
 #pragma once
 
 #include <memory>
 #include <ostream>
 #include <string>
+#include <string_view>
 
 #include "toolpath/source.hpp"
 
@@ -14,5 +15,10 @@ namespace postproc::cli {
 // a controller model go to `warnings` when the stream ends.
 std::unique_ptr<toolpath::CommandSource> open_source(const std::string& path, const std::string& dialect,
                                                      std::ostream& warnings, bool nc_lines = false);
+
+// "input format: trace, pikocnc, ...": the --dialect help of a subcommand, from the registry.
+std::string dialect_help(std::string_view what);
+// The --dialect help of `read` and `run`: the input format, trace by default.
+std::string_view input_help();
 
 }  // namespace postproc::cli

@@ -11,6 +11,8 @@ set(rules
   "gppl/builtins|gppl/compile/ gppl/run/"
   "prp/params|prp/filters/"
   "machines|gppl/ prp/ postproc/ bench/ tests/"
+  "machines/pikocnc|machines/2xaxiscnc/ machines/registry/registry"
+  "machines/2xaxiscnc|machines/pikocnc/ machines/registry/registry"
   "postproc/engine|machines/ postproc/checks/ postproc/cli/ bench/ tests/"
   "postproc/checks|postproc/cli/ bench/ tests/"
   "postproc/cli|bench/ tests/"

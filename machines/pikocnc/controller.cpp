@@ -1,0 +1,70 @@
+#include "machines/pikocnc/controller.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+
+#include "machines/pikocnc/dialect.hpp"
+#include "machines/pikocnc/reader.hpp"
+#include "toolpath/value.hpp"
+
+namespace pikocnc {
+namespace {
+
+// The reader's warnings, printed when the program ends (the reader goes on after each of them).
+class Reporting final : public machines::ProgramSource {
+public:
+  Reporting(std::unique_ptr<PikoReader> reader, std::ostream& warnings) : reader_(std::move(reader)), warnings_(warnings) {}
+  bool next(toolpath::Command& out) override {
+    if (reader_->next(out)) return true;
+    if (!reported_) {
+      reported_ = true;
+      const auto& d = reader_->diagnostics();
+      for (const auto& x : d.kept())
+        warnings_ << fmt::format("{}:{}:{}: warning: {}\n", reader_->file_name(), x.line, x.column, x.message);
+      if (d.total() > d.kept().size())
+        warnings_ << fmt::format("{}: {} more warnings not shown\n", reader_->file_name(), d.total() - d.kept().size());
+    }
+    return false;
+  }
+  std::size_t line() const override { return reader_->line(); }
+
+private:
+  std::unique_ptr<PikoReader> reader_;
+  std::ostream& warnings_;
+  bool reported_ = false;
+};
+
+class PikoCnc final : public machines::Controller {
+public:
+  std::span<const std::string_view> names() const override {
+    static constexpr std::array<std::string_view, 3> kNames = {"pikocnc", "pikocnc-2025", "pikocnc-2016"};
+    return kNames;
+  }
+  std::string_view title() const override { return "PikoCNC"; }
+  std::string_view summary() const override {
+    return "PikoCNC (dialects 2025 and 2016): cycles, loops, transforms, offsets and cutter compensation expanded";
+  }
+  std::unique_ptr<machines::ProgramSource> open(const std::string& path, std::string_view dialect,
+                                                const machines::ReadOptions& read, std::ostream& warnings) const override {
+    Options options;
+    std::string lower(dialect);
+    for (char& ch : lower) ch = toolpath::ascii_lower(ch);
+    options.dialect = parse_dialect(lower).value_or(Dialect::V2025);
+    options.nc_lines_in_trace = read.nc_lines_in_trace;
+    if (read.for_verify) {
+      options.comments_as_messages = false;
+      options.cutter_compensation = false;  // the toolpath is the programmed contour
+    }
+    return std::make_unique<Reporting>(PikoReader::open(path, options), warnings);
+  }
+};
+
+}  // namespace
+
+const machines::Controller& controller() {
+  static const PikoCnc instance;
+  return instance;
+}
+
+}  // namespace pikocnc
