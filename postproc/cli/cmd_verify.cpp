@@ -1,6 +1,6 @@
 // `postproc verify --post P.gpp [--prp P.prp] [--dialect NAME] JOB.trace`: posts a job, reads the
-// NC program back with the controller model the post writes for (the registry's, PikoCNC by
-// default) and compares the motion with the toolpath.
+// NC program back with the controller model the post writes for (the registry's first by default)
+// and compares the motion with the toolpath.
 #include <fmt/format.h>
 
 #include <ostream>
@@ -27,8 +27,8 @@ double positive_number(const Arguments& args, std::string_view option, double fa
   throw UsageError{fmt::format("{} needs a positive number, not `{}`", option, text)};
 }
 
-// The controller the post writes for, from the registry; the run's answers go with it (a
-// 2XAxisCNC program depends on the application's machine speed, which the post asks for).
+// The controller the post writes for, from the registry; the run's answers go with it (a program
+// may depend on the application's settings, which the post asks for).
 const machines::Controller& verify_controller(const std::string& dialect) {
   if (const machines::Controller* c = machines::find_controller(dialect)) return *c;
   throw UsageError{"verify knows the controllers " + machines::controller_names() + ", not `" + dialect + "`"};
@@ -95,7 +95,7 @@ Subcommand verify_command() {
   return {
       "verify",
       "postproc verify --post P.gpp [--prp P.prp] [--dialect NAME] [--tolerance MM] [--nc FILE] JOB.trace",
-      "Post a job with a PikoCNC (or 2XAxisCNC) post, read the NC back with the controller model, compare the motion.",
+      "Post a job, read the NC back with the model of the controller it is for (--dialect), compare the motion.",
       options,
       run_verify,
   };
