@@ -136,6 +136,4 @@ const CodeInfo* find_code(const CodeWord& code, Dialect dialect) {
   return c && (c->dialects & bit) ? c : nullptr;
 }
 
-std::span<const CodeInfo> all_codes() { return {kCodes, std::size(kCodes)}; }
-
 }  // namespace pikocnc

@@ -46,7 +46,4 @@ struct CodeInfo {
 // The table entry for a code as written, or nullptr when the dialect does not know it.
 const CodeInfo* find_code(const CodeWord& code, Dialect dialect);
 
-// All entries, in table order (for documentation and tests).
-std::span<const CodeInfo> all_codes();
-
 }  // namespace pikocnc

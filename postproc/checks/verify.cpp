@@ -29,13 +29,15 @@ std::string word(const Command& c, std::string_view name) {
 
 class NcMotion final : public MotionSource {
 public:
-  NcMotion(std::unique_ptr<machines::ProgramSource> reader, const machines::VerifyProfile& profile)
-      : reader_(std::move(reader)), profile_(profile) {
+  NcMotion(std::unique_ptr<machines::ProgramSource> reader, const machines::VerifyProfile& profile,
+           std::function<void(const Command&)> observe)
+      : reader_(std::move(reader)), profile_(profile), observe_(std::move(observe)) {
     started_ = profile.planar_speeds;  // a planar program starts at its origin, X0 Y0
   }
 
   bool next(Motion& out) override {
     while (reader_->next(command_)) {
+      if (observe_) observe_(command_);
       if (convert(command_, out)) return true;
     }
     return false;
@@ -113,6 +115,7 @@ private:
 
   std::unique_ptr<machines::ProgramSource> reader_;
   machines::VerifyProfile profile_;
+  std::function<void(const Command&)> observe_;
   Command command_;
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
   bool started_ = false;  // the first move's start is the controller's, not the program's
@@ -246,11 +249,37 @@ std::string difference(const Motion& a, const Motion& b, const Tolerances& given
 
 std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program, const machines::Controller& controller,
                                         std::string_view dialect, const machines::ReadOptions& options,
-                                        std::ostream& warnings) {
+                                        std::ostream& warnings, std::function<void(const Command&)> observe) {
   machines::ReadOptions read = options;
   read.for_verify = true;
   return std::make_unique<NcMotion>(controller.open(program.string(), dialect, read, warnings),
-                                    controller.verify_profile(read));
+                                    controller.verify_profile(read), std::move(observe));
+}
+
+namespace {
+
+std::string duration(double seconds) {
+  const auto whole = static_cast<long long>(std::llround(seconds));
+  if (whole < 60) return fmt::format("{} s", whole);
+  if (whole < 3600) return fmt::format("{} min {} s", whole / 60, whole % 60);
+  return fmt::format("{} h {} min {} s", whole / 3600, whole % 3600 / 60, whole % 60);
+}
+
+}  // namespace
+
+std::string describe(const CycleTime& time) {
+  std::string s = duration(time.seconds);
+  std::string tools;
+  for (const auto& t : time.tools) {
+    if (time.tools.size() == 1) break;               // no tool change: no breakdown
+    if (t.number == 0 && t.seconds < 0.5) continue;  // nothing before the first tool change
+    if (!tools.empty()) tools += ", ";
+    tools += t.number == 0 ? fmt::format("before the first tool {}", duration(t.seconds))
+                           : fmt::format("T{} {}", t.number, duration(t.seconds));
+  }
+  if (!tools.empty()) s += " (" + tools + ")";
+  if (time.rapid_feed_missing) s += "; rapids not timed: the machine file has no rapid_feed";
+  return s;
 }
 
 std::unique_ptr<MotionSource> normalised(MotionSource& source, const Tolerances& tolerances) {

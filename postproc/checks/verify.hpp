@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -83,9 +84,11 @@ private:
 // The NC side: the motion a controller's model makes for an NC program, read for verify (the
 // programmed path: cutter compensation off). Events carry their NC line. The model's warnings go to
 // `warnings` when the program ends; its errors are thrown (toolpath::InputError).
+// `observe` (when set) sees every command the model makes, in order.
 std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program, const machines::Controller& controller,
                                         std::string_view dialect, const machines::ReadOptions& options,
-                                        std::ostream& warnings);
+                                        std::ostream& warnings,
+                                        std::function<void(const toolpath::Command&)> observe = nullptr);
 
 // The toolpath side as a machine of VerifyProfile::planar_speeds makes it (verify_planar.cpp):
 // moves projected on X Y from the program origin, feeds turned into the speeds the post writes, tool
@@ -113,8 +116,25 @@ Result compare(MotionSource& expected, MotionSource& actual, const Tolerances& t
 // One line for a report: "rapid to X1 Y2 Z3", "arc CCW XY to ... centre ... R5 sweep 90", ...
 std::string describe(const Motion& motion);
 
+// The cycle time of the program as the controller model runs it (prp::TimeEstimate, spec 3.15:
+// its moves at their feeds, rapids at the machine file's rapid_feed, dwells, time_factor,
+// block_time and change_tool_time), in all and per tool, in the order the tools are used.
+struct CycleTime {
+  struct Tool {
+    std::int64_t number = 0;  // 0: before the first tool change
+    double seconds = 0;
+  };
+  double seconds = 0;
+  std::vector<Tool> tools;
+  bool rapid_feed_missing = false;  // rapids were not timed: the machine file has no rapid_feed
+};
+
+// "3 min 12 s (T3 1 min 40 s, T7 1 min 32 s)".
+std::string describe(const CycleTime& time);
+
 struct JobReport {
   Result result;
+  CycleTime cycle_time;            // of the program read back (up to a divergence)
   std::filesystem::path program;   // the NC program that was read back (removed unless kept)
   std::string expected_command;    // "command #21 @arc" of the expected side of a divergence
   std::string nc_line;             // "NAME.NC:42: G2 X40. Y5. I0. J5." of the actual side

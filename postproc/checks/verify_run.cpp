@@ -8,7 +8,9 @@
 #include <fmt/format.h>
 
 #include "postproc/checks/verify.hpp"
+#include "prp/filters/time_estimate.hpp"
 #include "toolpath/trace_reader.hpp"
+#include "toolpath/value.hpp"
 
 namespace postproc::verify {
 namespace {
@@ -78,12 +80,30 @@ JobReport verify_job(const Engine& engine, const std::string& job, const Toleran
   }
   auto expected_raw = expected.motion();
   std::ostringstream discarded;  // the model's warnings, when the caller takes none
-  auto actual_raw = nc_motion(main_file, controller, dialect, read, warnings ? *warnings : discarded);
+  // The cycle time of the program the model runs: split where the model changes the tool.
+  prp::TimeEstimate estimate(prp::time_settings(engine.machine(prp::Units::Metric)));
+  CycleTime& time = report.cycle_time;
+  time.tools.push_back({});
+  double tool_start = 0;
+  auto observe = [&](const toolpath::Command& c) {
+    const bool change = toolpath::iequals(c.name, "@change_tool") || toolpath::iequals(c.name, "@turn_change_tool");
+    if (change) {
+      time.tools.back().seconds = estimate.seconds() - tool_start;
+      tool_start = estimate.seconds();
+      const toolpath::Value* t = c.find("tool_number");
+      time.tools.push_back({t ? static_cast<std::int64_t>(t->as_number()) : -1, 0});
+    }
+    estimate.add(c);
+  };
+  auto actual_raw = nc_motion(main_file, controller, dialect, read, warnings ? *warnings : discarded, observe);
   if (const machines::VerifyProfile profile = controller.verify_profile(read); profile.planar_speeds)
     expected_raw = planar_expected(*(owned_expected = std::move(expected_raw)), profile);
   auto expected_motion = normalised(*expected_raw, tolerances);
   auto actual_motion = normalised(*actual_raw, tolerances);
   report.result = compare(*expected_motion, *actual_motion, tolerances);
+  time.tools.back().seconds = estimate.seconds() - tool_start;
+  time.seconds = estimate.seconds();
+  time.rapid_feed_missing = estimate.rapid_feed_missing();
   if (const auto& d = report.result.divergence) {
     if (d->expected) report.expected_command = fmt::format("command #{} {}", d->expected->where, d->expected->name);
     if (d->actual)

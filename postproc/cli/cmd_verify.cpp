@@ -69,7 +69,10 @@ int run_verify(const Arguments& args, std::ostream& out, std::ostream& err) {
   // Say which controller model read the NC: a post for another controller is not verified by it.
   const std::string model = fmt::format("the {} model (--dialect {})", controller.title(), dialect);
   if (!r.divergence) {
-    if (!args.has("--quiet")) out << fmt::format("{}: ok, {} motion events match; NC read by {}\n", job, r.compared, model);
+    if (!args.has("--quiet")) {
+      out << fmt::format("{}: ok, {} motion events match; NC read by {}\n", job, r.compared, model);
+      out << fmt::format("  cycle time {}\n", verify::describe(report.cycle_time));
+    }
     return kOk;
   }
   const auto& d = *r.divergence;

@@ -134,7 +134,22 @@ TEST(VerifyCli, ShippedSampleMatches) {
                 "../docs/examples/sample-job.trace"});
   EXPECT_EQ(r.code, 0) << r.out << r.err;
   EXPECT_EQ(r.out, "../docs/examples/sample-job.trace: ok, 50 motion events match; NC read by the PikoCNC model "
-                   "(--dialect pikocnc)\n");
+                   "(--dialect pikocnc)\n  cycle time 44 s (T3 25 s, T7 19 s)\n");
+}
+
+// The cycle time verify prints: in all, then per tool in the order the tools run.
+TEST(VerifyCycleTime, Describe) {
+  using T = postproc::verify::CycleTime;
+  struct Case {
+    T time;
+    const char* text;
+  } cases[] = {
+      {T{44.4, {{0, 0}, {3, 25.2}, {7, 19.2}}, false}, "44 s (T3 25 s, T7 19 s)"},
+      {T{55, {{0, 55}}, false}, "55 s"},  // no tool change: no breakdown
+      {T{130, {{0, 10}, {12, 120}}, false}, "2 min 10 s (before the first tool 10 s, T12 2 min 0 s)"},
+      {T{3725, {{0, 0}, {1, 3725}}, true}, "1 h 2 min 5 s (T1 1 h 2 min 5 s); rapids not timed: the machine file has no rapid_feed"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(postproc::verify::describe(c.time), c.text);
 }
 
 // A copy of the PikoCNC post that writes G2 for counter-clockwise arcs and G3 for clockwise ones.
