@@ -4,25 +4,17 @@
 #include <Eigen/Dense>
 #include <optional>
 
+#include "toolpath/geometry.hpp"
+
 namespace pikocnc {
 
-// G17, G18, G19: in-plane axes (first, second) and the normal (helix) axis, right-handed.
-enum class Plane : unsigned char { XY = 0, ZX = 1, YZ = 2 };
+// G17, G18, G19: the planes, their in-plane axes (first, second) and normal (helix) axis are the
+// stream's (toolpath/geometry.hpp), so the model and the filters cannot disagree on a plane.
+using Plane = toolpath::geometry::Plane;
+using PlaneAxes = toolpath::geometry::PlaneAxes;
 
-struct PlaneAxes {
-  int first, second, normal;
-};
-
-inline PlaneAxes axes_of(Plane p) {
-  switch (p) {
-    case Plane::XY: return {0, 1, 2};
-    case Plane::ZX: return {2, 0, 1};
-    case Plane::YZ: return {1, 2, 0};
-  }
-  return {0, 1, 2};
-}
-
-inline const char* plane_name(Plane p) { return p == Plane::XY ? "XY" : p == Plane::ZX ? "ZX" : "YZ"; }
+inline PlaneAxes axes_of(Plane p) { return toolpath::geometry::axes(p); }
+using toolpath::geometry::plane_name;
 
 constexpr double kPi = 3.14159265358979323846;
 
