@@ -2,6 +2,7 @@
 
 #include "machines/2xaxiscnc/controller.hpp"
 #include "machines/pikocnc/controller.hpp"
+#include "machines/sinumerik/controller.hpp"
 #include "toolpath/value.hpp"
 
 namespace machines {
@@ -11,6 +12,7 @@ std::span<const Controller* const> controllers() {
   static const Controller* const all[] = {
       &pikocnc::controller(),
       &twoaxis::controller(),
+      &sinumerik::controller(),
   };
   return all;
 }

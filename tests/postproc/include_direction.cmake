@@ -13,6 +13,7 @@ set(rules
   "machines|gppl/ prp/ postproc/ bench/ tests/"
   "machines/pikocnc|machines/2xaxiscnc/ machines/registry/registry"
   "machines/2xaxiscnc|machines/pikocnc/ machines/registry/registry"
+  "machines/sinumerik|machines/2xaxiscnc/ machines/registry/registry"
   "postproc/engine|machines/ postproc/checks/ postproc/cli/ bench/ tests/"
   "postproc/checks|postproc/cli/ bench/ tests/"
   "postproc/cli|bench/ tests/"

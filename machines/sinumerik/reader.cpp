@@ -1,0 +1,981 @@
+#include "machines/sinumerik/reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <string_view>
+
+#include <Eigen/Core>
+
+#include "machines/pikocnc/geometry.hpp"
+#include "machines/pikocnc/line_reader.hpp"
+#include "toolpath/error.hpp"
+#include "toolpath/geometry.hpp"
+#include "toolpath/value.hpp"
+
+namespace sinumerik {
+namespace {
+
+namespace fs = std::filesystem;
+namespace geo = toolpath::geometry;
+using toolpath::Command;
+using toolpath::Value;
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// A block that cannot be executed: the message names what and where (1-based column).
+struct BlockError {
+  std::size_t column;
+  std::string message;
+};
+
+// Words that change nothing the motion shows (smoothing, look-ahead, work offsets whose values the
+// program does not give): accepted without a word.
+const std::set<std::string, std::less<>>& quiet_words() {
+  static const std::set<std::string, std::less<>> words = {
+      "SOFT", "BRISK", "DRIVE", "FFWON", "FFWOF", "CFC", "CFTCP", "CFIN", "COMPOF", "COMPON", "COMPCURV",
+      "COMPCAD", "TRAFOOF", "SPATH", "UPATH", "DIAMOF", "DIAMON", "WALIMON", "WALIMOF", "STOPRE", "ORIWKS",
+      "ORIMKS", "G60", "G64", "G641", "G642", "G643", "G644", "G645", "G9", "G601", "G602", "G603"};
+  return words;
+}
+
+// The position of one program in its call chain.
+struct Source {
+  fs::path path;
+  std::string name;  // as messages show it
+  std::unique_ptr<std::ifstream> stream;
+  std::unique_ptr<pikocnc::LineReader> lines;
+  std::map<std::string, pikocnc::LineReader::Mark, std::less<>> labels;  // upper case, seen so far
+  std::size_t repeats_left = 0;  // further passes of a call with P
+  pikocnc::LineReader::Mark start;
+  pikocnc::LineReader::Mark before;  // where the line read last starts (a label's block)
+};
+
+// The values of `X=AC(3)`, `I=IC(-1)`, `X12.5`: absolute (AC), incremental (IC) or as the mode says.
+enum class Dim : unsigned char { Modal, Absolute, Incremental };
+struct Coordinate {
+  double value = 0;
+  Dim dim = Dim::Modal;
+};
+
+struct Block {
+  std::array<std::optional<Coordinate>, 3> axes;    // X Y Z
+  std::array<std::optional<Coordinate>, 3> centre;  // I J K
+  std::optional<double> cr, f, s, d;
+  std::optional<std::string> tool_name;
+  std::optional<double> tool_number;
+  std::vector<double> g, m;
+  bool supa = false;
+  std::optional<std::string> msg;
+  struct Call {
+    std::string program;
+    std::size_t repeats = 1;
+    std::size_t column = 1;
+  };
+  std::optional<Call> call;
+  struct Cycle {
+    std::string name;
+    std::vector<std::optional<double>> args;
+    std::size_t column = 1;
+  };
+  std::optional<Cycle> cycle;
+  bool mcall = false;  // MCALL: `cycle` becomes modal (or, without one, the modal call ends)
+  bool ret = false;
+  struct Jump {
+    bool back = true;
+    std::string label;
+    std::size_t column = 1;
+  };
+  std::optional<Jump> jump;
+  std::optional<std::size_t> p_column;  // a P word (repeats of the call)
+  std::optional<double> p;
+};
+
+}  // namespace
+
+struct SinumerikReader::Impl {
+  Options options;
+  fs::path folder;
+  std::string main_name;
+  std::vector<Source> stack;
+  std::map<std::string, fs::path, std::less<>> folder_files;  // upper-case name -> file
+  bool folder_listed = false;
+  std::map<std::string, double, std::less<>> vars;  // upper-case name
+  std::deque<Command> queue;
+  std::vector<Diagnostic> diagnostics;
+  std::size_t diagnostic_total = 0, error_total = 0;
+  std::set<std::string, std::less<>> warned_words;
+  std::size_t executed = 0;
+  std::size_t current_line = 0, main_line = 0;
+  bool finished = false;
+
+  // Modal state
+  Eigen::Vector3d pos = Eigen::Vector3d::Zero();  // tool position, work coordinates (mm)
+  Eigen::Vector3d trans = Eigen::Vector3d::Zero();  // TRANS/ATRANS
+  int motion = 0;  // 0..3
+  geo::Plane plane = geo::Plane::XY;
+  bool absolute = true, inch_geometry = false, inch_feed = false, per_rev = false;
+  double feed = 0, speed = 0;
+  int spindle = 5;  // 3, 4 or 5
+  std::optional<std::string> selected_name;
+  std::optional<double> selected_number;
+  std::optional<Block::Cycle> modal_cycle;
+  bool warned_per_rev = false;
+
+  Impl(const std::string& path, Options o) : options(o) {
+    fs::path p(path);
+    folder = p.parent_path();
+    main_name = path;
+    push(p, path, 1);
+  }
+
+  void push(const fs::path& p, const std::string& name, std::size_t repeats) {
+    Source s;
+    s.path = p;
+    s.name = name;
+    s.stream = std::make_unique<std::ifstream>(p, std::ios::binary);
+    if (!*s.stream) throw toolpath::InputError({name, 0, 0}, "cannot open the program");
+    s.lines = std::make_unique<pikocnc::LineReader>(*s.stream, name);
+    s.start = s.lines->mark();
+    s.repeats_left = repeats - 1;
+    stack.push_back(std::move(s));
+  }
+
+  void diagnose(bool error, std::size_t column, std::string message) {
+    ++diagnostic_total;
+    if (error) ++error_total;
+    if (diagnostics.size() >= options.max_diagnostics) return;
+    const Source& s = stack.back();
+    diagnostics.push_back({s.name, current_line, column, std::move(message), error});
+  }
+
+  void warn_once(const std::string& key, std::size_t column, std::string message) {
+    if (warned_words.insert(key).second) diagnose(false, column, std::move(message));
+  }
+
+  // ---------------------------------------------------------------- commands
+  Command& add(std::string_view name) {
+    queue.emplace_back();
+    Command& c = queue.back();
+    c.name = std::string(name);
+    return c;
+  }
+  static void number(Command& c, std::string_view name, double v) {
+    c.set(name, Value::make_numeric(pikocnc::clean(v)));
+  }
+  void position(Command& c, const Eigen::Vector3d& p) {
+    number(c, "xpos", p.x());
+    number(c, "ypos", p.y());
+    number(c, "zpos", p.z());
+  }
+  void rapid(const Eigen::Vector3d& to) {
+    position(add("@rapid_move"), to);
+    pos = to;
+  }
+  void line(const Eigen::Vector3d& to, double f) {
+    Command& c = add("@line");
+    position(c, to);
+    number(c, "feed", f);
+    pos = to;
+  }
+  void dwell(double seconds) { number(add("@delay"), "delay_period", seconds); }
+
+  // ---------------------------------------------------------------- reading
+  bool read_line(std::string_view& text) {
+    while (!stack.empty()) {
+      Source& s = stack.back();
+      s.before = s.lines->mark();
+      if (s.lines->next(text)) {
+        current_line = s.lines->line_number();
+        return true;
+      }
+      end_of_source(false);
+    }
+    return false;
+  }
+
+  // A program ends (its last line, M17/RET, or M2/M30 in a subprogram): the next pass of a call with
+  // P, or back to the caller.
+  void end_of_source(bool returned) {
+    Source& s = stack.back();
+    if (s.repeats_left > 0) {
+      --s.repeats_left;
+      s.lines->seek(s.start);
+      return;
+    }
+    if (!returned && stack.size() > 1) diagnose(false, 1, "the subprogram ends without M17 or RET");
+    stack.pop_back();
+    if (stack.empty()) finished = true;
+  }
+
+  std::optional<fs::path> find_program(std::string_view name) {
+    if (!folder_listed) {
+      folder_listed = true;
+      std::error_code ec;
+      for (const auto& e : fs::directory_iterator(folder.empty() ? fs::path(".") : folder, ec))
+        if (e.is_regular_file(ec)) folder_files.emplace(upper(e.path().filename().string()), e.path());
+    }
+    std::string file = upper(fs::path(std::string(name)).filename().string());  // a Windows path keeps its name
+    for (std::string candidate : {file, file + ".SPF", file + ".MPF"}) {
+      auto it = folder_files.find(candidate);
+      if (it != folder_files.end()) return it->second;
+    }
+    return std::nullopt;
+  }
+
+  // ---------------------------------------------------------------- lexing and expressions
+  struct Cursor {
+    std::string_view text;
+    std::size_t i = 0;
+    void skip() {
+      while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    }
+    bool at_end() {
+      skip();
+      return i >= text.size();
+    }
+    char peek() {
+      skip();
+      return i < text.size() ? text[i] : '\0';
+    }
+    std::size_t column() const { return i + 1; }
+    std::string ident() {
+      skip();
+      std::size_t b = i;
+      if (i < text.size() && ident_start(text[i]))
+        while (i < text.size() && ident_char(text[i])) ++i;
+      return std::string(text.substr(b, i - b));
+    }
+    bool eat(char c) {
+      if (peek() != c) return false;
+      ++i;
+      return true;
+    }
+    bool eat(std::string_view s) {
+      skip();
+      if (text.substr(i, s.size()) != s) return false;
+      i += s.size();
+      return true;
+    }
+  };
+
+  double literal(Cursor& c) {
+    c.skip();
+    const std::size_t b = c.i;
+    if (c.i < c.text.size() && (c.text[c.i] == '+' || c.text[c.i] == '-')) ++c.i;
+    bool digits = false;
+    while (c.i < c.text.size() && (std::isdigit(static_cast<unsigned char>(c.text[c.i])) || c.text[c.i] == '.')) {
+      digits |= c.text[c.i] != '.';
+      ++c.i;
+    }
+    if (!digits) throw BlockError{b + 1, "expected a number"};
+    std::string s(c.text.substr(b, c.i - b));
+    return std::strtod(s.c_str(), nullptr);
+  }
+
+  double primary(Cursor& c) {
+    const char ch = c.peek();
+    if (ch == '(') {
+      ++c.i;
+      const double v = expression(c);
+      if (!c.eat(')')) throw BlockError{c.column(), "expected `)`"};
+      return v;
+    }
+    if (ch == '-' || ch == '+') {
+      ++c.i;
+      const double v = primary(c);
+      return ch == '-' ? -v : v;
+    }
+    if (std::isdigit(static_cast<unsigned char>(ch)) || ch == '.') return literal(c);
+    if (ident_start(ch)) {
+      const std::size_t col = c.column();
+      const std::string name = upper(c.ident());
+      if (name == "TRUE") return 1;
+      if (name == "FALSE") return 0;
+      if (name == "NOT") return primary(c) == 0 ? 1 : 0;
+      if (c.peek() == '(') {  // a function of one argument
+        ++c.i;
+        const double v = expression(c);
+        if (!c.eat(')')) throw BlockError{c.column(), "expected `)`"};
+        if (name == "ABS") return std::abs(v);
+        if (name == "SQRT") return std::sqrt(v);
+        if (name == "SIN") return std::sin(v * pikocnc::kPi / 180);
+        if (name == "COS") return std::cos(v * pikocnc::kPi / 180);
+        if (name == "TRUNC") return std::trunc(v);
+        if (name == "ROUND") return std::round(v);
+        throw BlockError{col, fmt::format("the function {} is not modelled", name)};
+      }
+      auto it = vars.find(name);
+      if (it == vars.end()) {
+        if (name.size() > 1 && name[0] == 'R' && std::all_of(name.begin() + 1, name.end(), ::isdigit)) return 0;  // R params start at 0
+        throw BlockError{col, fmt::format("`{}` is no variable of the program (DEF it first)", name)};
+      }
+      return it->second;
+    }
+    throw BlockError{c.column(), "expected a value"};
+  }
+
+  double product(Cursor& c) {
+    double v = primary(c);
+    for (;;) {
+      if (c.eat('*')) v *= primary(c);
+      else if (c.peek() == '/') {
+        ++c.i;
+        const std::size_t col = c.column();
+        const double d = primary(c);
+        if (d == 0) throw BlockError{col, "division by zero"};
+        v /= d;
+      } else return v;
+    }
+  }
+
+  double sum(Cursor& c) {
+    double v = product(c);
+    for (;;) {
+      if (c.eat('+')) v += product(c);
+      else if (c.eat('-')) v -= product(c);
+      else return v;
+    }
+  }
+
+  double comparison(Cursor& c) {
+    const double a = sum(c);
+    if (c.eat("==")) return a == sum(c);
+    if (c.eat("<>")) return a != sum(c);
+    if (c.eat("<=")) return a <= sum(c);
+    if (c.eat(">=")) return a >= sum(c);
+    if (c.eat('<')) return a < sum(c);
+    if (c.eat('>')) return a > sum(c);
+    return a;
+  }
+
+  // Comparisons joined by AND / OR (AND first).
+  double expression(Cursor& c) {
+    double v = comparison(c);
+    for (;;) {
+      const std::size_t save = c.i;
+      const std::string word = upper(c.ident());
+      if (word == "AND") v = (v != 0 && comparison(c) != 0) ? 1 : 0;
+      else if (word == "OR") v = (v != 0 || comparison(c) != 0) ? 1 : 0;
+      else {
+        c.i = save;
+        return v;
+      }
+    }
+  }
+
+  // The value after `X=`: AC(...), IC(...) or an expression.
+  Coordinate coordinate_value(Cursor& c) {
+    const std::size_t save = c.i;
+    const std::string f = upper(c.ident());
+    if ((f == "AC" || f == "IC") && c.peek() == '(') {
+      ++c.i;
+      Coordinate k{expression(c), f == "AC" ? Dim::Absolute : Dim::Incremental};
+      if (!c.eat(')')) throw BlockError{c.column(), "expected `)`"};
+      return k;
+    }
+    c.i = save;
+    return {expression(c), Dim::Modal};
+  }
+
+  std::string string_literal(Cursor& c) {
+    if (!c.eat('"')) throw BlockError{c.column(), "expected a \"text\""};
+    const std::size_t b = c.i;
+    while (c.i < c.text.size() && c.text[c.i] != '"') ++c.i;
+    if (c.i >= c.text.size()) throw BlockError{b, "the text has no closing \""};
+    return std::string(c.text.substr(b, c.i++ - b));
+  }
+
+  // ---------------------------------------------------------------- one block
+  static std::string_view strip_comment(std::string_view line) {
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (line[i] == '"') quoted = !quoted;
+      else if (line[i] == ';' && !quoted) return line.substr(0, i);
+    }
+    return line;
+  }
+
+  // Parses `text` (comment stripped) into `b`; labels are registered by the caller.
+  void parse(Cursor& c, Block& b) {
+    while (!c.at_end()) {
+      const char ch = c.peek();
+      const std::size_t col = c.column();
+      if (ch == '/' && c.i == 0) {  // block skip: executed (the control's skip switch is off)
+        ++c.i;
+        continue;
+      }
+      if (!ident_start(ch)) throw BlockError{col, fmt::format("unexpected `{}`", ch)};
+      // An address letter directly followed by its number: X12.5, G04, M3, N10 (not R11=..., an
+      // assignment to the arithmetic parameter R11).
+      if (std::isalpha(static_cast<unsigned char>(ch)) && c.i + 1 < c.text.size() && !assigns(c) &&
+          (std::isdigit(static_cast<unsigned char>(c.text[c.i + 1])) || c.text[c.i + 1] == '-' ||
+           c.text[c.i + 1] == '.' || c.text[c.i + 1] == '+')) {
+        const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        ++c.i;
+        const double v = literal(c);
+        address(b, letter, {v, Dim::Modal}, col);
+        continue;
+      }
+      const std::string name = upper(c.ident());
+      if (c.peek() == '=' && !(c.i + 1 < c.text.size() && c.text[c.i + 1] == '=')) {
+        ++c.i;
+        assignment(c, b, name, col);
+        continue;
+      }
+      if (name.rfind("CYCLE", 0) == 0 && c.peek() == '(') {
+        b.cycle = Block::Cycle{name, cycle_args(c, name), col};
+        continue;
+      }
+      keyword(c, b, name, col);
+    }
+  }
+
+  // The identifier at the cursor is followed by `=` (not `==`): an assignment.
+  static bool assigns(const Cursor& c) {
+    std::size_t i = c.i;
+    while (i < c.text.size() && ident_char(c.text[i])) ++i;
+    while (i < c.text.size() && (c.text[i] == ' ' || c.text[i] == '\t')) ++i;
+    return i < c.text.size() && c.text[i] == '=' && !(i + 1 < c.text.size() && c.text[i + 1] == '=');
+  }
+
+  std::vector<std::optional<double>> cycle_args(Cursor& c, const std::string& name) {
+    ++c.i;  // (
+    std::vector<std::optional<double>> args;
+    const bool evaluate = name != "CYCLE832" && name != "CYCLE800";  // their arguments are words
+    for (;;) {
+      c.skip();
+      if (c.peek() == ',' || c.peek() == ')') {
+        args.push_back(std::nullopt);
+      } else if (evaluate) {
+        args.push_back(expression(c));
+      } else {
+        int depth = 0;
+        while (c.i < c.text.size() && (depth > 0 || (c.text[c.i] != ',' && c.text[c.i] != ')'))) {
+          depth += c.text[c.i] == '(' ? 1 : c.text[c.i] == ')' ? -1 : 0;
+          ++c.i;
+        }
+        args.push_back(std::nullopt);
+      }
+      if (c.eat(')')) return args;
+      if (!c.eat(',')) throw BlockError{c.column(), fmt::format("expected `,` or `)` in {}", name)};
+    }
+  }
+
+  void address(Block& b, char letter, Coordinate k, std::size_t col) {
+    switch (letter) {
+      case 'X': b.axes[0] = k; return;
+      case 'Y': b.axes[1] = k; return;
+      case 'Z': b.axes[2] = k; return;
+      case 'I': b.centre[0] = k; return;
+      case 'J': b.centre[1] = k; return;
+      case 'K': b.centre[2] = k; return;
+      case 'F': b.f = k.value; return;
+      case 'S': b.s = k.value; return;
+      case 'D': b.d = k.value; return;
+      case 'T': b.tool_number = k.value; return;
+      case 'G': b.g.push_back(k.value); return;
+      case 'M': b.m.push_back(k.value); return;
+      case 'H': return;  // auxiliary functions: not motion
+      case 'N': return;  // a block number after the first word
+      case 'P': b.p = k.value; b.p_column = col; return;
+      case 'L': b.call = Block::Call{fmt::format("L{}", static_cast<long long>(k.value)), 1, col}; return;
+      default:
+        warn_once(fmt::format("addr {}", letter), col, fmt::format("the address {} is not modelled: ignored", letter));
+    }
+  }
+
+  void assignment(Cursor& c, Block& b, const std::string& name, std::size_t col) {
+    if (name == "T") {  // T="NAME"
+      c.skip();
+      if (c.peek() == '"') b.tool_name = string_literal(c);
+      else b.tool_number = expression(c);
+      return;
+    }
+    if (name == "CR") {
+      b.cr = expression(c);
+      return;
+    }
+    if (name.size() == 1 && std::string_view("XYZIJKFSD").find(name[0]) != std::string_view::npos) {
+      address(b, name[0], coordinate_value(c), col);
+      return;
+    }
+    const double v = expression(c);
+    if (vars.count(name) || (name.size() > 1 && name[0] == 'R' && std::all_of(name.begin() + 1, name.end(), ::isdigit)))
+      vars[name] = v;
+    else throw BlockError{col, fmt::format("`{}` is no variable of the program (DEF it first)", name)};
+  }
+
+  void keyword(Cursor& c, Block& b, const std::string& name, std::size_t col) {
+    if (name == "SUPA" || name == "G53") {
+      b.supa = true;
+      return;
+    }
+    if (name == "MSG") {
+      if (!c.eat('(')) throw BlockError{c.column(), "expected MSG(\"text\")"};
+      c.skip();
+      b.msg = c.peek() == '"' ? string_literal(c) : std::string();
+      if (!c.eat(')')) throw BlockError{c.column(), "expected `)`"};
+      return;
+    }
+    if (name == "DEF") {
+      const std::string type = upper(c.ident());
+      if (type != "REAL" && type != "INT" && type != "BOOL" && type != "CHAR" && type != "STRING" && type != "AXIS" &&
+          type != "FRAME")
+        throw BlockError{col, fmt::format("DEF of the type `{}` is not modelled", type)};
+      do {
+        const std::string var = upper(c.ident());
+        if (var.empty()) throw BlockError{c.column(), "expected a variable name"};
+        if (c.eat('[')) {
+          while (c.i < c.text.size() && c.text[c.i] != ']') ++c.i;
+          c.eat(']');
+        }
+        double v = 0;
+        if (c.eat('=')) v = (type == "STRING" || type == "CHAR") ? (string_literal(c), 0.0) : expression(c);
+        vars[var] = v;
+      } while (c.eat(','));
+      return;
+    }
+    if (name == "EXTCALL") {
+      c.skip();
+      b.call = Block::Call{c.peek() == '"' ? string_literal(c) : c.ident(), 1, col};
+      return;
+    }
+    if (name == "MCALL") {
+      b.mcall = true;
+      return;
+    }
+    if (name == "RET" || name == "M17") {
+      b.ret = true;
+      return;
+    }
+    if (name == "IF") {
+      const double condition = expression(c);
+      const std::string go = upper(c.ident());
+      if (go != "GOTOB" && go != "GOTOF" && go != "GOTO") throw BlockError{c.column(), "expected GOTOB or GOTOF after IF"};
+      const std::size_t lc = c.column();
+      const std::string label = upper(c.ident());
+      if (condition != 0) b.jump = Block::Jump{go == "GOTOB", label, lc};
+      return;
+    }
+    if (name == "GOTOB" || name == "GOTOF" || name == "GOTO") {
+      const std::size_t lc = c.column();
+      b.jump = Block::Jump{name == "GOTOB", upper(c.ident()), lc};
+      return;
+    }
+    if (name == "PROC") {  // a subprogram's header: its name and parameters
+      c.i = c.text.size();
+      return;
+    }
+    if (name == "TRANS" || name == "ATRANS") {
+      if (name == "TRANS") trans = Eigen::Vector3d::Zero();
+      Block shift;
+      parse(c, shift);
+      for (int a = 0; a < 3; ++a)
+        if (shift.axes[static_cast<std::size_t>(a)]) trans[a] += shift.axes[static_cast<std::size_t>(a)]->value * length_unit();
+      return;
+    }
+    if (name == "ROT" || name == "AROT" || name == "SCALE" || name == "ASCALE" || name == "MIRROR" || name == "AMIRROR") {
+      c.i = c.text.size();
+      throw BlockError{col, fmt::format("the frame {} is not modelled: the motion after it would not be the program's",
+                                        name)};
+    }
+    if (quiet_words().count(name)) return;
+    if (auto file = find_program(name)) {  // a subprogram called by its name
+      b.call = Block::Call{name, 1, col};
+      return;
+    }
+    warn_once(name, col, fmt::format("`{}` is not modelled: ignored", name));
+  }
+
+  double length_unit() const { return inch_geometry ? 25.4 : 1.0; }
+
+  // ---------------------------------------------------------------- execution
+  void execute(Block& b) {
+    // P: the repeats of the block's call (a P without a call is an error).
+    if (b.p) {
+      if (!b.call) throw BlockError{*b.p_column, "P without a subprogram call"};
+      if (*b.p < 1 || *b.p > 1e6) throw BlockError{*b.p_column, fmt::format("P{} is no number of passes", *b.p)};
+      b.call->repeats = static_cast<std::size_t>(*b.p);
+    }
+    if (b.msg && !b.msg->empty()) add("@message").set("message", Value::make_string(*b.msg));
+    bool dwell_block = false;
+    for (double g : b.g) {
+      const int code = static_cast<int>(std::lround(g * 10));
+      switch (code) {
+        case 0: motion = 0; break;
+        case 10: motion = 1; break;
+        case 20: motion = 2; break;
+        case 30: motion = 3; break;
+        case 40: dwell_block = true; break;
+        case 170: plane = geo::Plane::XY; break;
+        case 180: plane = geo::Plane::ZX; break;
+        case 190: plane = geo::Plane::YZ; break;
+        case 400: compensation("COMP_OFF"); break;
+        case 410: compensation("COMP_LEFT"); break;
+        case 420: compensation("COMP_RIGHT"); break;
+        case 700: inch_geometry = true; inch_feed = false; break;
+        case 710: inch_geometry = false; inch_feed = false; break;
+        case 7000: inch_geometry = true; inch_feed = true; break;
+        case 7100: inch_geometry = false; inch_feed = false; break;
+        case 900: absolute = true; break;
+        case 910: absolute = false; break;
+        case 940: per_rev = false; break;
+        case 950: per_rev = true; break;
+        case 530: b.supa = true; break;
+        default:
+          if ((code >= 5000 && code <= 5990 && code % 10 == 0) || (code >= 540 && code <= 570 && code % 10 == 0)) break;
+          if (quiet_words().count(fmt::format("G{}", code / 10))) break;
+          warn_once(fmt::format("G{}", g), 1, fmt::format("G{} is not modelled: ignored", g));
+      }
+    }
+    if (dwell_block) {
+      if (b.f) dwell(*b.f);
+      else if (b.s && speed > 0) dwell(*b.s * 60.0 / speed);
+      else throw BlockError{1, "G4 needs F (seconds) or S (revolutions of a running spindle)"};
+      b.f.reset();
+      b.s.reset();
+    }
+    if (b.f) {
+      feed = *b.f * (inch_feed ? 25.4 : 1.0);
+      if (per_rev && !warned_per_rev) {
+        warned_per_rev = true;
+        diagnose(false, 1, "G95: feeds are per revolution; they are passed on as written");
+      }
+    }
+    tool(b);
+    spindle_words(b);
+    if (b.axes[0] || b.axes[1] || b.axes[2] || b.centre[0] || b.centre[1] || b.centre[2] || b.cr) move(b);
+    if (b.cycle && (b.cycle->name == "CYCLE832" || b.cycle->name == "CYCLE800")) {
+      if (b.cycle->name == "CYCLE800")
+        warn_once("CYCLE800", b.cycle->column, "CYCLE800 (swivelling) is not modelled: the frame after it is the program's");
+      b.cycle.reset();
+    }
+    if (b.mcall) modal_cycle = b.cycle;  // MCALL CYCLE8x(...) on, MCALL alone off
+    else if (b.cycle) drill_cycle(*b.cycle);
+    else if (modal_cycle && (b.axes[0] || b.axes[1] || b.axes[2])) drill_cycle(*modal_cycle);
+    for (double m : b.m) {
+      const int code = static_cast<int>(m);
+      if (code == 2 || code == 30) {
+        if (stack.size() > 1) b.ret = true;
+        else {
+          end_program();
+          return;
+        }
+      }
+      if (code == 17) b.ret = true;
+    }
+    if (b.call) call(*b.call);
+    else if (b.jump) jump(*b.jump);
+    if (b.ret) {
+      if (stack.size() == 1) end_program();
+      else end_of_source(true);
+    }
+  }
+
+  void compensation(std::string_view side) { add("@compensation").set("side", Value::make_enum(std::string(side))); }
+
+  void end_program() {
+    position(add("@end_program"), pos);
+    finished = true;
+    stack.clear();
+  }
+
+  void tool(const Block& b) {
+    if (b.tool_name) {
+      selected_name = b.tool_name;
+      selected_number.reset();
+    }
+    if (b.tool_number) {
+      selected_number = b.tool_number;
+      selected_name.reset();
+    }
+    for (double m : b.m)
+      if (static_cast<int>(m) == 6) {
+        Command& c = add("@change_tool");
+        c.set("tool_number", Value::make_integer(selected_number ? static_cast<std::int64_t>(*selected_number) : 0));
+        if (selected_name) c.set("tool_name", Value::make_string(*selected_name));
+      }
+  }
+
+  void spindle_words(const Block& b) {
+    std::optional<int> m_code;
+    for (double m : b.m) {
+      const int code = static_cast<int>(m);
+      if (code == 3 || code == 4 || code == 5) m_code = code;
+    }
+    if (b.s) speed = *b.s;
+    if (m_code == 5) {
+      if (spindle != 5) add("@stop_tool");
+      spindle = 5;
+    } else if (m_code) {
+      Command& c = add("@start_tool");
+      number(c, "spin", speed);
+      c.set("spin_direction", Value::make_enum(*m_code == 4 ? "CCW" : "CW"));
+      spindle = *m_code;
+    } else if (b.s && spindle != 5) {
+      number(add("@m_feed_spin"), "spin", speed);
+    }
+  }
+
+  void move(const Block& b) {
+    Eigen::Vector3d to = pos;
+    for (int a = 0; a < 3; ++a) {
+      const auto& k = b.axes[static_cast<std::size_t>(a)];
+      if (!k) continue;
+      const double v = k->value * length_unit();
+      const bool abs = k->dim == Dim::Absolute || (k->dim == Dim::Modal && absolute);
+      to[a] = abs ? v + (b.supa ? 0.0 : trans[a]) : pos[a] + v;
+    }
+    if (b.supa) {  // machine coordinates: the model does not know where they are in the work frame
+      Command& c = add("@machine_move");
+      for (int a = 0; a < 3; ++a)
+        if (b.axes[static_cast<std::size_t>(a)]) number(c, std::array{"xpos", "ypos", "zpos"}[static_cast<std::size_t>(a)], to[a]);
+      return;
+    }
+    if (motion == 0) return rapid(to);
+    if (feed <= 0) diagnose(false, 1, "a feed move before any feed (F) was given");
+    if (motion == 1) return line(to, feed);
+    arc(b, to);
+  }
+
+  void arc(const Block& b, const Eigen::Vector3d& to) {
+    const bool ccw = motion == 3;
+    const geo::PlaneAxes ax = geo::axes(plane);
+    Eigen::Vector3d centre = pos;
+    if (b.cr) {
+      const auto c2 = pikocnc::centre_from_radius(pikocnc::in_plane(pos, plane), pikocnc::in_plane(to, plane),
+                                                  *b.cr * length_unit(), ccw, options.arc_tolerance);
+      if (!c2) throw BlockError{1, fmt::format("CR={} cannot join the start and the end point", *b.cr)};
+      centre[ax.first] = c2->x();
+      centre[ax.second] = c2->y();
+    } else {
+      bool any = false;
+      for (int a : {ax.first, ax.second}) {
+        const auto& k = b.centre[static_cast<std::size_t>(a)];
+        if (!k) continue;
+        any = true;
+        const double v = k->value * length_unit();
+        centre[a] = k->dim == Dim::Absolute ? v + trans[a] : pos[a] + v;  // I J K are incremental unless AC
+      }
+      if (!any) throw BlockError{1, fmt::format("G{} needs its centre (I J K) or CR=", ccw ? 3 : 2)};
+    }
+    const geo::Arc a = geo::make_arc(pos, to, centre, plane, ccw ? geo::Direction::CCW : geo::Direction::CW, 360.0);
+    Command& c = add("@arc");
+    position(c, to);
+    number(c, "feed", feed);
+    number(c, "xcenter", centre.x());
+    number(c, "ycenter", centre.y());
+    number(c, "zcenter", centre.z());
+    number(c, "radius", a.radius);
+    number(c, "arc_size", a.sweep);
+    c.set("arc_direction", Value::make_enum(ccw ? "CCW" : "CW"));
+    c.set("arc_plane", Value::make_enum(std::string(geo::plane_name(plane))));
+    pos = to;
+  }
+
+  // The drilling cycles, hole by hole at the current position: RTP retract plane, RFP reference
+  // plane, SDIS safety distance, DP depth (absolute) or DPR (relative to RFP).
+  void drill_cycle(const Block::Cycle& cycle) {
+    auto arg = [&](std::size_t i) -> std::optional<double> {
+      return i < cycle.args.size() ? cycle.args[i] : std::nullopt;
+    };
+    auto need = [&](std::size_t i, const char* what) {
+      auto v = arg(i);
+      if (!v) throw BlockError{cycle.column, fmt::format("{} needs {}", cycle.name, what)};
+      return *v * length_unit();
+    };
+    const double rtp = need(0, "RTP"), rfp = need(1, "RFP"), sdis = arg(2).value_or(0) * length_unit();
+    double dp;
+    if (arg(3)) dp = *arg(3) * length_unit();
+    else if (arg(4)) dp = rfp - std::abs(*arg(4)) * length_unit();
+    else throw BlockError{cycle.column, fmt::format("{} needs DP or DPR", cycle.name)};
+    const double approach = rfp + sdis;
+    auto to_z = [&](bool fast, double z, double f) {
+      Eigen::Vector3d p = pos;
+      p.z() = z;
+      if (fast) rapid(p);
+      else line(p, f);
+    };
+    const std::string& n = cycle.name;
+    if (n == "CYCLE81" || n == "CYCLE82") {
+      to_z(true, approach, 0);
+      to_z(false, dp, feed);
+      if (auto dtb = arg(5); dtb && *dtb > 0) dwell(*dtb);
+      to_z(true, rtp, 0);
+    } else if (n == "CYCLE83") {
+      // FDEP (absolute) or FDPR (relative): the first depth; DAM reduces the next steps (0: all as
+      // the first); VARI 1 lifts to RFP+SDIS after each step, 0 only breaks the chip (retract 1 mm).
+      double first = arg(5) ? *arg(5) * length_unit() : arg(6) ? rfp - std::abs(*arg(6)) * length_unit() : dp;
+      double step = std::max(rfp - first, 1e-3);
+      const double dam = arg(7).value_or(0) * length_unit();
+      const bool removal = arg(11).value_or(1) != 0;
+      to_z(true, approach, 0);
+      double depth = rfp, previous = approach;
+      for (std::size_t n_steps = 0;; ++n_steps) {
+        if (n_steps > 100000) throw BlockError{cycle.column, "CYCLE83 makes more than 100000 steps"};
+        const double next = std::max(depth - step, dp);
+        if (n_steps > 0 && removal) to_z(true, previous, 0);
+        to_z(false, next, feed);
+        depth = next;
+        if (depth <= dp + 1e-9) break;
+        previous = depth;
+        if (removal) to_z(true, approach, 0);
+        else to_z(true, depth + 1.0, 0);
+        if (dam > 0) step = std::max(step - dam, dam);
+      }
+      to_z(true, rtp, 0);
+    } else if (n == "CYCLE84" || n == "CYCLE840") {
+      to_z(true, approach, 0);
+      to_z(false, dp, feed);
+      to_z(false, approach, feed);
+      to_z(true, rtp, 0);
+    } else if (n == "CYCLE85" || n == "CYCLE89") {
+      const double in = arg(6).value_or(feed), out = arg(7).value_or(feed);
+      to_z(true, approach, 0);
+      to_z(false, dp, in > 0 ? in : feed);
+      if (auto dtb = arg(5); dtb && *dtb > 0) dwell(*dtb);
+      to_z(false, approach, out > 0 ? out : feed);
+      to_z(true, rtp, 0);
+    } else if (n == "CYCLE86") {
+      to_z(true, approach, 0);
+      to_z(false, dp, feed);
+      if (auto dtb = arg(5); dtb && *dtb > 0) dwell(*dtb);
+      add("@stop_tool");
+      to_z(true, rtp, 0);
+      Command& c = add("@start_tool");
+      number(c, "spin", speed);
+      c.set("spin_direction", Value::make_enum(spindle == 4 ? "CCW" : "CW"));
+    } else {
+      warn_once(n, cycle.column, fmt::format("the cycle {} is not modelled: no motion", n));
+    }
+  }
+
+  void call(const Block::Call& c) {
+    auto file = find_program(c.program);
+    if (!file) throw BlockError{c.column, fmt::format("the subprogram `{}` is not in {}", c.program, folder.string())};
+    if (stack.size() >= options.max_call_depth)
+      throw BlockError{c.column, fmt::format("subprograms nested deeper than {} (a recursion?)", options.max_call_depth)};
+    push(*file, file->filename().string(), c.repeats);
+  }
+
+  void jump(const Block::Jump& j) {
+    Source& s = stack.back();
+    if (j.back) {
+      auto it = s.labels.find(j.label);
+      if (it == s.labels.end()) throw BlockError{j.column, fmt::format("GOTOB: no label {} before this block", j.label)};
+      s.lines->seek(it->second);
+      return;
+    }
+    // Forward: read on to the label's block (blocks in between are skipped, not executed).
+    std::string_view text;
+    for (;;) {
+      const pikocnc::LineReader::Mark at = s.lines->mark();
+      if (!s.lines->next(text)) throw BlockError{j.column, fmt::format("GOTOF: no label {} after this block", j.label)};
+      if (label_of(text) == j.label) {
+        s.lines->seek(at);
+        return;
+      }
+    }
+  }
+
+  // The label a line starts with (after its block number), upper case; empty when none.
+  static std::string label_of(std::string_view line) {
+    std::size_t i = 0;
+    auto skip = [&] {
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    };
+    skip();
+    if (i < line.size() && (line[i] == 'N' || line[i] == 'n') && i + 1 < line.size() &&
+        std::isdigit(static_cast<unsigned char>(line[i + 1]))) {
+      ++i;
+      while (i < line.size() && std::isdigit(static_cast<unsigned char>(line[i]))) ++i;
+      skip();
+    }
+    const std::size_t b = i;
+    if (i >= line.size() || !ident_start(line[i])) return {};
+    while (i < line.size() && ident_char(line[i])) ++i;
+    if (i < line.size() && line[i] == ':') return upper(line.substr(b, i - b));
+    return {};
+  }
+
+  // Executes lines until commands are queued or the program ends.
+  void run() {
+    std::string_view raw;
+    while (queue.empty() && !finished && read_line(raw)) {
+      if (++executed > options.max_executed_blocks) {
+        diagnose(true, 1, fmt::format("more than {} blocks executed: a runaway loop?", options.max_executed_blocks));
+        finished = true;
+        stack.clear();
+        return;
+      }
+      Source& s = stack.back();
+      const std::size_t depth = stack.size();
+      main_line = depth == 1 ? current_line : 0;
+      std::string_view text = strip_comment(raw);
+      // The block number, then a label (registered where it stands, for GOTOB).
+      Cursor c{text};
+      c.skip();
+      if (c.i < text.size() && (text[c.i] == 'N' || text[c.i] == 'n') && c.i + 1 < text.size() &&
+          std::isdigit(static_cast<unsigned char>(text[c.i + 1]))) {
+        ++c.i;
+        while (c.i < text.size() && std::isdigit(static_cast<unsigned char>(text[c.i]))) ++c.i;
+      }
+      if (const std::string label = label_of(text); !label.empty()) {
+        s.labels[label] = s.before;  // GOTOB executes the label's block again
+        c.skip();
+        while (c.i < text.size() && text[c.i] != ':') ++c.i;
+        ++c.i;
+      }
+      Block b;
+      try {
+        parse(c, b);
+        execute(b);
+      } catch (const BlockError& e) {
+        diagnose(true, e.column, e.message);
+      }
+    }
+  }
+};
+
+SinumerikReader::SinumerikReader(const std::string& path, Options options)
+    : impl_(std::make_unique<Impl>(path, options)) {}
+
+SinumerikReader::~SinumerikReader() = default;
+
+std::unique_ptr<SinumerikReader> SinumerikReader::open(const std::string& path, Options options) {
+  return std::unique_ptr<SinumerikReader>(new SinumerikReader(path, options));
+}
+
+bool SinumerikReader::next(toolpath::Command& out) {
+  if (impl_->queue.empty()) impl_->run();
+  if (impl_->queue.empty()) return false;
+  out = std::move(impl_->queue.front());
+  impl_->queue.pop_front();
+  return true;
+}
+
+std::size_t SinumerikReader::line() const { return impl_->main_line; }
+const std::string& SinumerikReader::file_name() const { return impl_->main_name; }
+const std::vector<Diagnostic>& SinumerikReader::diagnostics() const { return impl_->diagnostics; }
+std::size_t SinumerikReader::diagnostic_count() const { return impl_->diagnostic_total; }
+std::size_t SinumerikReader::error_count() const { return impl_->error_total; }
+
+}  // namespace sinumerik
