@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <string_view>
 
 #include <Eigen/Core>
@@ -60,7 +61,7 @@ const std::set<std::string, std::less<>>& quiet_words() {
 struct Source {
   fs::path path;
   std::string name;  // as messages show it
-  std::unique_ptr<std::ifstream> stream;
+  std::unique_ptr<std::istream> stream;
   std::unique_ptr<pikocnc::LineReader> lines;
   std::map<std::string, pikocnc::LineReader::Mark, std::less<>> labels;  // upper case, seen so far
   std::size_t repeats_left = 0;  // further passes of a call with P
@@ -139,6 +140,8 @@ struct SinumerikReader::Impl {
   std::optional<Block::Cycle> modal_cycle;
   bool warned_per_rev = false;
 
+  bool in_memory = false;  // no folder: subprograms cannot be found
+
   Impl(const std::string& path, Options o) : options(o) {
     fs::path p(path);
     folder = p.parent_path();
@@ -146,12 +149,21 @@ struct SinumerikReader::Impl {
     push(p, path, 1);
   }
 
+  Impl(std::string text, std::string name, Options o) : options(o), main_name(name), in_memory(true) {
+    push_stream(std::make_unique<std::istringstream>(std::move(text)), fs::path(name), name, 1);
+  }
+
   void push(const fs::path& p, const std::string& name, std::size_t repeats) {
+    auto file = std::make_unique<std::ifstream>(p, std::ios::binary);
+    if (!*file) throw toolpath::InputError({name, 0, 0}, "cannot open the program");
+    push_stream(std::move(file), p, name, repeats);
+  }
+
+  void push_stream(std::unique_ptr<std::istream> in, const fs::path& p, const std::string& name, std::size_t repeats) {
     Source s;
     s.path = p;
     s.name = name;
-    s.stream = std::make_unique<std::ifstream>(p, std::ios::binary);
-    if (!*s.stream) throw toolpath::InputError({name, 0, 0}, "cannot open the program");
+    s.stream = std::move(in);
     s.lines = std::make_unique<pikocnc::LineReader>(*s.stream, name);
     s.start = s.lines->mark();
     s.repeats_left = repeats - 1;
@@ -226,6 +238,7 @@ struct SinumerikReader::Impl {
   }
 
   std::optional<fs::path> find_program(std::string_view name) {
+    if (in_memory) return std::nullopt;
     if (!folder_listed) {
       folder_listed = true;
       std::error_code ec;
@@ -955,13 +968,17 @@ struct SinumerikReader::Impl {
   }
 };
 
-SinumerikReader::SinumerikReader(const std::string& path, Options options)
-    : impl_(std::make_unique<Impl>(path, options)) {}
+SinumerikReader::SinumerikReader(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 SinumerikReader::~SinumerikReader() = default;
 
 std::unique_ptr<SinumerikReader> SinumerikReader::open(const std::string& path, Options options) {
-  return std::unique_ptr<SinumerikReader>(new SinumerikReader(path, options));
+  return std::unique_ptr<SinumerikReader>(new SinumerikReader(std::make_unique<Impl>(path, options)));
+}
+
+std::unique_ptr<SinumerikReader> SinumerikReader::from_string(std::string text, std::string name, Options options) {
+  return std::unique_ptr<SinumerikReader>(
+      new SinumerikReader(std::make_unique<Impl>(std::move(text), std::move(name), options)));
 }
 
 bool SinumerikReader::next(toolpath::Command& out) {

@@ -33,6 +33,8 @@ public:
   // Opens the main program; subprograms are looked up in its folder. Throws toolpath::InputError
   // when it cannot be read.
   static std::unique_ptr<SinumerikReader> open(const std::string& path, Options options = {});
+  // A program held in memory (tests, fuzzing): it has no folder, so every subprogram call is an error.
+  static std::unique_ptr<SinumerikReader> from_string(std::string text, std::string name, Options options = {});
   ~SinumerikReader() override;
 
   // Never throws for an error in a block: it becomes a diagnostic and the block is skipped, as a
@@ -48,8 +50,8 @@ public:
   std::size_t error_count() const;
 
 private:
-  SinumerikReader(const std::string& path, Options options);
   struct Impl;
+  explicit SinumerikReader(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 

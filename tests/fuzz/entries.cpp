@@ -15,6 +15,7 @@
 #include "gppl/gppl.hpp"
 #include "machines/2xaxiscnc/reader.hpp"
 #include "machines/pikocnc/reader.hpp"
+#include "machines/sinumerik/reader.hpp"
 #include "machines/pikocnc/script/script.hpp"
 #include "postproc/engine/engine.hpp"
 #include "postproc/engine/parameter_check.hpp"
@@ -223,6 +224,18 @@ void twoaxis(std::string_view data) {
     if (++commands > 1'000'000) broken("a 2XAxisCNC program of bounded size gave more than a million commands");
 }
 
+void sinumerik(std::string_view data) {
+  // Never throws on a bad block (diagnostics instead); no folder, so subprogram calls are errors. A
+  // GOTOB loop is bounded by the executed-block limit, kept low here.
+  sinumerik::Options options;
+  options.max_executed_blocks = 100'000;
+  auto reader = sinumerik::SinumerikReader::from_string(std::string(data), "fuzz.mpf", options);
+  toolpath::Command c;
+  long commands = 0;
+  while (reader->next(c))
+    if (++commands > 5'000'000) broken("a Sinumerik program of bounded size gave more than five million commands");
+}
+
 void pikocnc_script(std::string_view data) {
   // A stream buffer that throws the G-code away: a script may write a lot within its step budget.
   struct Discard final : std::streambuf {
@@ -264,7 +277,7 @@ Entry entry(std::string_view target) {
   static constexpr Named kEntries[] = {
       {"trace_reader", trace_reader}, {"gppl_check", gppl_check}, {"gppl_run", gppl_run},
       {"display_format", display_format}, {"prp_loader", prp_loader}, {"pikocnc", pikocnc},
-      {"vmid", vmid}, {"twoaxis", twoaxis}, {"pikocnc_script", pikocnc_script},
+      {"vmid", vmid}, {"twoaxis", twoaxis}, {"pikocnc_script", pikocnc_script}, {"sinumerik", sinumerik},
   };
   for (const Named& n : kEntries)
     if (n.name == target) return n.entry;

@@ -17,6 +17,7 @@ void prp_loader(std::string_view data);      // load a PRP (both unit halves), w
 void pikocnc(std::string_view data);         // read PikoCNC G-code back into motion, bounded
 void vmid(std::string_view data);            // load a VMID machine file (XML) like prp_loader: load, write, load
 void twoaxis(std::string_view data);         // read a 2XAxisCNC program back into stream commands
+void sinumerik(std::string_view data);       // read a Sinumerik program back into stream commands
 void pikocnc_script(std::string_view data);  // parse, check and run a PikoCNC script, bounded, output discarded
 
 // The entry of a target by name (the folder names under regressions/); nullptr when unknown.
