@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include "machines/pikocnc/geometry.hpp"
+#include "machines/ncmodel/motion_out.hpp"
 #include "machines/pikocnc/line_reader.hpp"
 #include "toolpath/error.hpp"
 #include "toolpath/geometry.hpp"
@@ -119,7 +120,7 @@ struct SinumerikReader::Impl {
   std::map<std::string, fs::path, std::less<>> folder_files;  // upper-case name -> file
   bool folder_listed = false;
   std::map<std::string, double, std::less<>> vars;  // upper-case name
-  std::deque<Command> queue;
+  ncmodel::MotionOut out;
   std::vector<Diagnostic> diagnostics;
   std::size_t diagnostic_total = 0, error_total = 0;
   std::set<std::string, std::less<>> warned_words;
@@ -127,14 +128,12 @@ struct SinumerikReader::Impl {
   std::size_t current_line = 0, main_line = 0;
   bool finished = false;
 
-  // Modal state
-  Eigen::Vector3d pos = Eigen::Vector3d::Zero();  // tool position, work coordinates (mm)
+  // Modal state (the tool position is out.position(), in work coordinates, mm)
   Eigen::Vector3d trans = Eigen::Vector3d::Zero();  // TRANS/ATRANS
   int motion = 0;  // 0..3
   geo::Plane plane = geo::Plane::XY;
   bool absolute = true, inch_geometry = false, inch_feed = false, per_rev = false;
   double feed = 0, speed = 0;
-  int spindle = 5;  // 3, 4 or 5
   std::optional<std::string> selected_name;
   std::optional<double> selected_number;
   std::optional<Block::Cycle> modal_cycle;
@@ -181,33 +180,6 @@ struct SinumerikReader::Impl {
   void warn_once(const std::string& key, std::size_t column, std::string message) {
     if (warned_words.insert(key).second) diagnose(false, column, std::move(message));
   }
-
-  // ---------------------------------------------------------------- commands
-  Command& add(std::string_view name) {
-    queue.emplace_back();
-    Command& c = queue.back();
-    c.name = std::string(name);
-    return c;
-  }
-  static void number(Command& c, std::string_view name, double v) {
-    c.set(name, Value::make_numeric(pikocnc::clean(v)));
-  }
-  void position(Command& c, const Eigen::Vector3d& p) {
-    number(c, "xpos", p.x());
-    number(c, "ypos", p.y());
-    number(c, "zpos", p.z());
-  }
-  void rapid(const Eigen::Vector3d& to) {
-    position(add("@rapid_move"), to);
-    pos = to;
-  }
-  void line(const Eigen::Vector3d& to, double f) {
-    Command& c = add("@line");
-    position(c, to);
-    number(c, "feed", f);
-    pos = to;
-  }
-  void dwell(double seconds) { number(add("@delay"), "delay_period", seconds); }
 
   // ---------------------------------------------------------------- reading
   bool read_line(std::string_view& text) {
@@ -628,7 +600,7 @@ struct SinumerikReader::Impl {
       if (*b.p < 1 || *b.p > 1e6) throw BlockError{*b.p_column, fmt::format("P{} is no number of passes", *b.p)};
       b.call->repeats = static_cast<std::size_t>(*b.p);
     }
-    if (b.msg && !b.msg->empty()) add("@message").set("message", Value::make_string(*b.msg));
+    if (b.msg && !b.msg->empty()) out.message(*b.msg);
     bool dwell_block = false;
     for (double g : b.g) {
       const int code = static_cast<int>(std::lround(g * 10));
@@ -641,9 +613,9 @@ struct SinumerikReader::Impl {
         case 170: plane = geo::Plane::XY; break;
         case 180: plane = geo::Plane::ZX; break;
         case 190: plane = geo::Plane::YZ; break;
-        case 400: compensation("COMP_OFF"); break;
-        case 410: compensation("COMP_LEFT"); break;
-        case 420: compensation("COMP_RIGHT"); break;
+        case 400: out.compensation("COMP_OFF"); break;
+        case 410: out.compensation("COMP_LEFT"); break;
+        case 420: out.compensation("COMP_RIGHT"); break;
         case 700: inch_geometry = true; inch_feed = false; break;
         case 710: inch_geometry = false; inch_feed = false; break;
         case 7000: inch_geometry = true; inch_feed = true; break;
@@ -660,8 +632,8 @@ struct SinumerikReader::Impl {
       }
     }
     if (dwell_block) {
-      if (b.f) dwell(*b.f);
-      else if (b.s && speed > 0) dwell(*b.s * 60.0 / speed);
+      if (b.f) out.dwell(*b.f);
+      else if (b.s && speed > 0) out.dwell(*b.s * 60.0 / speed);
       else throw BlockError{1, "G4 needs F (seconds) or S (revolutions of a running spindle)"};
       b.f.reset();
       b.s.reset();
@@ -703,10 +675,8 @@ struct SinumerikReader::Impl {
     }
   }
 
-  void compensation(std::string_view side) { add("@compensation").set("side", Value::make_enum(std::string(side))); }
-
   void end_program() {
-    position(add("@end_program"), pos);
+    out.end_program();
     finished = true;
     stack.clear();
   }
@@ -721,11 +691,7 @@ struct SinumerikReader::Impl {
       selected_name.reset();
     }
     for (double m : b.m)
-      if (static_cast<int>(m) == 6) {
-        Command& c = add("@change_tool");
-        c.set("tool_number", Value::make_integer(selected_number ? static_cast<std::int64_t>(*selected_number) : 0));
-        if (selected_name) c.set("tool_name", Value::make_string(*selected_name));
-      }
+      if (static_cast<int>(m) == 6) out.tool_change(selected_number, selected_name);
   }
 
   void spindle_words(const Block& b) {
@@ -735,20 +701,12 @@ struct SinumerikReader::Impl {
       if (code == 3 || code == 4 || code == 5) m_code = code;
     }
     if (b.s) speed = *b.s;
-    if (m_code == 5) {
-      if (spindle != 5) add("@stop_tool");
-      spindle = 5;
-    } else if (m_code) {
-      Command& c = add("@start_tool");
-      number(c, "spin", speed);
-      c.set("spin_direction", Value::make_enum(*m_code == 4 ? "CCW" : "CW"));
-      spindle = *m_code;
-    } else if (b.s && spindle != 5) {
-      number(add("@m_feed_spin"), "spin", speed);
-    }
+    if (m_code) out.spindle(*m_code, speed);
+    else if (b.s) out.speed(speed);
   }
 
   void move(const Block& b) {
+    const Eigen::Vector3d& pos = out.position();
     Eigen::Vector3d to = pos;
     for (int a = 0; a < 3; ++a) {
       const auto& k = b.axes[static_cast<std::size_t>(a)];
@@ -758,18 +716,19 @@ struct SinumerikReader::Impl {
       to[a] = abs ? v + (b.supa ? 0.0 : trans[a]) : pos[a] + v;
     }
     if (b.supa) {  // machine coordinates: the model does not know where they are in the work frame
-      Command& c = add("@machine_move");
-      for (int a = 0; a < 3; ++a)
-        if (b.axes[static_cast<std::size_t>(a)]) number(c, std::array{"xpos", "ypos", "zpos"}[static_cast<std::size_t>(a)], to[a]);
-      return;
+      std::array<std::optional<double>, 3> axes;
+      for (std::size_t a = 0; a < 3; ++a)
+        if (b.axes[a]) axes[a] = to[static_cast<int>(a)];
+      return out.machine_move(axes);
     }
-    if (motion == 0) return rapid(to);
+    if (motion == 0) return out.rapid(to);
     if (feed <= 0) diagnose(false, 1, "a feed move before any feed (F) was given");
-    if (motion == 1) return line(to, feed);
+    if (motion == 1) return out.line(to, feed);
     arc(b, to);
   }
 
   void arc(const Block& b, const Eigen::Vector3d& to) {
+    const Eigen::Vector3d& pos = out.position();
     const bool ccw = motion == 3;
     const geo::PlaneAxes ax = geo::axes(plane);
     Eigen::Vector3d centre = pos;
@@ -790,18 +749,7 @@ struct SinumerikReader::Impl {
       }
       if (!any) throw BlockError{1, fmt::format("G{} needs its centre (I J K) or CR=", ccw ? 3 : 2)};
     }
-    const geo::Arc a = geo::make_arc(pos, to, centre, plane, ccw ? geo::Direction::CCW : geo::Direction::CW, 360.0);
-    Command& c = add("@arc");
-    position(c, to);
-    number(c, "feed", feed);
-    number(c, "xcenter", centre.x());
-    number(c, "ycenter", centre.y());
-    number(c, "zcenter", centre.z());
-    number(c, "radius", a.radius);
-    number(c, "arc_size", a.sweep);
-    c.set("arc_direction", Value::make_enum(ccw ? "CCW" : "CW"));
-    c.set("arc_plane", Value::make_enum(std::string(geo::plane_name(plane))));
-    pos = to;
+    out.arc(to, centre, plane, ccw, feed);
   }
 
   // The drilling cycles, hole by hole at the current position: RTP retract plane, RFP reference
@@ -815,69 +763,48 @@ struct SinumerikReader::Impl {
       if (!v) throw BlockError{cycle.column, fmt::format("{} needs {}", cycle.name, what)};
       return *v * length_unit();
     };
-    const double rtp = need(0, "RTP"), rfp = need(1, "RFP"), sdis = arg(2).value_or(0) * length_unit();
-    double dp;
-    if (arg(3)) dp = *arg(3) * length_unit();
-    else if (arg(4)) dp = rfp - std::abs(*arg(4)) * length_unit();
+    using Kind = ncmodel::MotionOut::Hole::Kind;
+    ncmodel::MotionOut::Hole h;
+    h.retract = need(0, "RTP");
+    const double rfp = need(1, "RFP");
+    h.approach = rfp + arg(2).value_or(0) * length_unit();
+    if (arg(3)) h.depth = *arg(3) * length_unit();
+    else if (arg(4)) h.depth = rfp - std::abs(*arg(4)) * length_unit();
     else throw BlockError{cycle.column, fmt::format("{} needs DP or DPR", cycle.name)};
-    const double approach = rfp + sdis;
-    auto to_z = [&](bool fast, double z, double f) {
-      Eigen::Vector3d p = pos;
-      p.z() = z;
-      if (fast) rapid(p);
-      else line(p, f);
-    };
+    h.feed = feed;
     const std::string& n = cycle.name;
     if (n == "CYCLE81" || n == "CYCLE82") {
-      to_z(true, approach, 0);
-      to_z(false, dp, feed);
-      if (auto dtb = arg(5); dtb && *dtb > 0) dwell(*dtb);
-      to_z(true, rtp, 0);
+      h.kind = Kind::Drill;
+      h.dwell = arg(5).value_or(0);
     } else if (n == "CYCLE83") {
-      // FDEP (absolute) or FDPR (relative): the first depth; DAM reduces the next steps (0: all as
-      // the first); VARI 1 lifts to RFP+SDIS after each step, 0 only breaks the chip (retract 1 mm).
-      double first = arg(5) ? *arg(5) * length_unit() : arg(6) ? rfp - std::abs(*arg(6)) * length_unit() : dp;
-      double step = std::max(rfp - first, 1e-3);
-      const double dam = arg(7).value_or(0) * length_unit();
-      const bool removal = arg(11).value_or(1) != 0;
-      to_z(true, approach, 0);
-      double depth = rfp, previous = approach;
-      for (std::size_t n_steps = 0;; ++n_steps) {
-        if (n_steps > 100000) throw BlockError{cycle.column, "CYCLE83 makes more than 100000 steps"};
-        const double next = std::max(depth - step, dp);
-        if (n_steps > 0 && removal) to_z(true, previous, 0);
-        to_z(false, next, feed);
-        depth = next;
-        if (depth <= dp + 1e-9) break;
-        previous = depth;
-        if (removal) to_z(true, approach, 0);
-        else to_z(true, depth + 1.0, 0);
-        if (dam > 0) step = std::max(step - dam, dam);
-      }
-      to_z(true, rtp, 0);
+      // FDEP (absolute) or FDPR (relative to RFP): the first depth; DAM shortens the next steps
+      // (0: all as the first); VARI 1 lifts to RFP+SDIS after each step, 0 breaks the chip (1 mm).
+      const double first = arg(5) ? *arg(5) * length_unit() : arg(6) ? rfp - std::abs(*arg(6)) * length_unit() : h.depth;
+      h.kind = arg(11).value_or(1) != 0 ? Kind::Peck : Kind::ChipBreak;
+      h.first_step = h.approach - first;
+      h.step = rfp - first;
+      h.step_reduction = arg(7).value_or(0) * length_unit();
+      h.dwell = arg(8).value_or(0);
     } else if (n == "CYCLE84" || n == "CYCLE840") {
-      to_z(true, approach, 0);
-      to_z(false, dp, feed);
-      to_z(false, approach, feed);
-      to_z(true, rtp, 0);
+      h.kind = Kind::Tap;
     } else if (n == "CYCLE85" || n == "CYCLE89") {
-      const double in = arg(6).value_or(feed), out = arg(7).value_or(feed);
-      to_z(true, approach, 0);
-      to_z(false, dp, in > 0 ? in : feed);
-      if (auto dtb = arg(5); dtb && *dtb > 0) dwell(*dtb);
-      to_z(false, approach, out > 0 ? out : feed);
-      to_z(true, rtp, 0);
+      h.kind = Kind::Bore;
+      h.dwell = arg(5).value_or(0);
+      if (n == "CYCLE85") {
+        h.feed = arg(6).value_or(feed);
+        h.feed_out = arg(7).value_or(feed);
+      }
     } else if (n == "CYCLE86") {
-      to_z(true, approach, 0);
-      to_z(false, dp, feed);
-      if (auto dtb = arg(5); dtb && *dtb > 0) dwell(*dtb);
-      add("@stop_tool");
-      to_z(true, rtp, 0);
-      Command& c = add("@start_tool");
-      number(c, "spin", speed);
-      c.set("spin_direction", Value::make_enum(spindle == 4 ? "CCW" : "CW"));
+      h.kind = Kind::BoreSpindleStop;
+      h.dwell = arg(5).value_or(0);
     } else {
       warn_once(n, cycle.column, fmt::format("the cycle {} is not modelled: no motion", n));
+      return;
+    }
+    try {
+      out.hole(h);
+    } catch (const std::runtime_error& e) {
+      throw BlockError{cycle.column, fmt::format("{}: {}", n, e.what())};
     }
   }
 
@@ -932,7 +859,7 @@ struct SinumerikReader::Impl {
   // Executes lines until commands are queued or the program ends.
   void run() {
     std::string_view raw;
-    while (queue.empty() && !finished && read_line(raw)) {
+    while (out.queue().empty() && !finished && read_line(raw)) {
       if (++executed > options.max_executed_blocks) {
         diagnose(true, 1, fmt::format("more than {} blocks executed: a runaway loop?", options.max_executed_blocks));
         finished = true;
@@ -982,10 +909,11 @@ std::unique_ptr<SinumerikReader> SinumerikReader::from_string(std::string text, 
 }
 
 bool SinumerikReader::next(toolpath::Command& out) {
-  if (impl_->queue.empty()) impl_->run();
-  if (impl_->queue.empty()) return false;
-  out = std::move(impl_->queue.front());
-  impl_->queue.pop_front();
+  auto& queue = impl_->out.queue();
+  if (queue.empty()) impl_->run();
+  if (queue.empty()) return false;
+  out = std::move(queue.front());
+  queue.pop_front();
   return true;
 }
 

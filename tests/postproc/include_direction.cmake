@@ -14,6 +14,7 @@ set(rules
   "machines/pikocnc|machines/2xaxiscnc/ machines/registry/registry"
   "machines/2xaxiscnc|machines/pikocnc/ machines/registry/registry"
   "machines/sinumerik|machines/2xaxiscnc/ machines/registry/registry"
+  "machines/ncmodel|machines/pikocnc/ machines/2xaxiscnc/ machines/sinumerik/ machines/registry/"
   "postproc/engine|machines/ postproc/checks/ postproc/cli/ bench/ tests/"
   "postproc/checks|postproc/cli/ bench/ tests/"
   "postproc/cli|bench/ tests/"

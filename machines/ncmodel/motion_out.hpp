@@ -1,0 +1,72 @@
+// What a controller model makes of a program, as neutral stream commands: moves from the tool's
+// position, arcs, dwells, spindle and tool events, and drilling cycles expanded hole by hole. Shared
+// by the models that execute a program block by block (Sinumerik, the ISO family), so that a cycle
+// or an arc means the same motion in each; the stream's conventions are those of the PikoCNC model
+// (an arc's xcenter ycenter zcenter are the centre's X Y Z).
+#pragma once
+
+#include <array>
+#include <deque>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <Eigen/Core>
+
+#include "toolpath/command.hpp"
+#include "toolpath/geometry.hpp"
+
+namespace ncmodel {
+
+class MotionOut {
+public:
+  std::deque<toolpath::Command>& queue() { return queue_; }
+  const Eigen::Vector3d& position() const { return position_; }
+
+  void rapid(const Eigen::Vector3d& to);
+  void line(const Eigen::Vector3d& to, double feed);
+  // An arc from the position to `to` about `centre` (its normal coordinate is ignored); a full
+  // circle when they coincide in the plane.
+  void arc(const Eigen::Vector3d& to, const Eigen::Vector3d& centre, toolpath::geometry::Plane plane, bool ccw,
+           double feed);
+  void dwell(double seconds);
+  // M3 (CW), M4 (CCW) or M5; a new speed while it runs.
+  void spindle(int m, double speed);
+  void speed(double speed);
+  int spindle_state() const { return spindle_; }
+  void tool_change(std::optional<double> number, const std::optional<std::string>& name);
+  void message(std::string text);
+  void compensation(std::string_view side);  // COMP_LEFT, COMP_RIGHT, COMP_OFF
+  // A move in machine coordinates: where that is in the work frame the program does not say, so the
+  // position stays; the command carries the axes it names (nullopt: not moved).
+  void machine_move(const std::array<std::optional<double>, 3>& axes);
+  void end_program();
+
+  // One hole of a drilling cycle at the current X Y: a rapid to `approach` (the R level), then by
+  // kind down to `depth`, and a rapid to `retract` at the end.
+  struct Hole {
+    enum class Kind { Drill, Peck, ChipBreak, Tap, Bore, BoreSpindleStop };
+    Kind kind = Kind::Drill;
+    double approach = 0, depth = 0, retract = 0;
+    double first_step = 0;      // Peck, ChipBreak: the first step's depth below `approach`'s level
+    double step = 0;            // the following steps (0: as the first)
+    double step_reduction = 0;  // each step shorter by this, down to it (Sinumerik's DAM)
+    double chip_lift = 1.0;     // ChipBreak: the lift after each step
+    double dwell = 0;           // at the bottom, seconds
+    double feed = 0, feed_out = 0;  // feed_out: Tap and Bore (0: feed)
+  };
+  // Throws std::runtime_error when the steps never reach the depth (more than 100000 of them).
+  void hole(const Hole& h);
+
+private:
+  static void number(toolpath::Command& c, std::string_view name, double v);
+  toolpath::Command& add(std::string_view name);
+  void position_words(toolpath::Command& c, const Eigen::Vector3d& p);
+
+  std::deque<toolpath::Command> queue_;
+  Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
+  int spindle_ = 5;
+  double speed_ = 0;
+};
+
+}  // namespace ncmodel
