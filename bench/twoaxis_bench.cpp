@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
   fmt::print("{} frames, {} commands in {:.3f} s: {:.2f} M frames/s, {:.2f} M commands/s\n", frames, t.commands,
              t.seconds, frames / t.seconds / 1e6, t.commands / t.seconds / 1e6);
   fmt::print("peak RSS {} kB before reading, {} kB after; {} diagnostics; checksum {:.3f}\n", rss_before,
-             bench::peak_rss_kb(), reader->diagnostic_count(), t.checksum);
+             bench::peak_rss_kb(), reader->diagnostics().total(), t.checksum);
   std::remove(path.c_str());
-  return reader->error_count() == 0 ? 0 : 1;
+  return reader->diagnostics().errors() == 0 ? 0 : 1;
 }

@@ -24,6 +24,7 @@
 
 #include <Eigen/Core>
 
+#include "toolpath/diagnostic.hpp"
 #include "toolpath/error.hpp"
 #include "toolpath/source.hpp"
 #include "toolpath/value.hpp"
@@ -49,12 +50,8 @@ std::string_view kind_name(ValueKind kind);
 enum class VarType : std::uint8_t { Integer, Numeric, Logical, String };
 std::string_view type_name(VarType type);
 
-struct Diagnostic {
-  toolpath::SourcePosition where;
-  std::string message;
-  // "file:line:col: message" (errors) or "file:line:col: warning: message".
-  std::string text(bool warning = false) const;
-};
+// "file:line:col: error: message" or "... warning: message" (toolpath/diagnostic.hpp).
+using Diagnostic = toolpath::Diagnostic;
 
 // Loading failed: every error of the file, in file order. what() lists them, one per line.
 class LoadError : public std::runtime_error {

@@ -1,49 +1,13 @@
 #include "machines/2xaxiscnc/controller.hpp"
 
-#include <fmt/format.h>
-
 #include <array>
 
 #include "machines/2xaxiscnc/reader.hpp"
-#include "toolpath/error.hpp"
+#include "machines/registry/report_at_end.hpp"
 #include "toolpath/value.hpp"
 
 namespace twoaxis {
 namespace {
-
-// Every diagnostic is printed when the program ends; errors (frames skipped or clamped: the motion
-// is not the program's) then fail with the first error's position.
-class Reporting final : public machines::ProgramSource {
-public:
-  Reporting(std::unique_ptr<TwoAxisReader> reader, std::ostream& warnings) : reader_(std::move(reader)), warnings_(warnings) {}
-  bool next(toolpath::Command& out) override {
-    if (reader_->next(out)) return true;
-    if (reported_) return false;
-    reported_ = true;
-    const Diagnostic* first_error = nullptr;
-    for (const auto& d : reader_->diagnostics()) {
-      const bool error = d.severity == Diagnostic::Severity::Error;
-      if (error && !first_error) first_error = &d;
-      warnings_ << fmt::format("{}:{}:{}: {}: {}\n", d.file.empty() ? reader_->file_name() : d.file, d.line, d.column,
-                               error ? "error" : "warning", d.message);
-    }
-    const std::size_t hidden = reader_->diagnostic_count() - reader_->diagnostics().size();
-    if (hidden > 0) warnings_ << fmt::format("{}: {} more diagnostics not shown\n", reader_->file_name(), hidden);
-    if (reader_->error_count() > 0) {
-      const auto& e = first_error ? *first_error : reader_->diagnostics().front();
-      throw toolpath::InputError({e.file.empty() ? reader_->file_name() : e.file, e.line, e.column},
-                                 fmt::format("{} error(s) in the program; the first: {}", reader_->error_count(), e.message));
-    }
-    return false;
-  }
-
-  std::size_t line() const override { return reader_->script_name().empty() ? reader_->line() : 0; }
-
-private:
-  std::unique_ptr<TwoAxisReader> reader_;
-  std::ostream& warnings_;
-  bool reported_ = false;
-};
 
 // The application's speed settings, as the post's answers give them (its defaults otherwise).
 void from_answers(const machines::ReadOptions& read, double& machine_speed, double& rapid_coefficient) {
@@ -79,7 +43,7 @@ public:
       from_answers(read, options.machine_speed, rapid);
       options.rapid_coefficient = 0;  // every frame a @line at its coefficient's feed
     }
-    return std::make_unique<Reporting>(TwoAxisReader::open(path, options), warnings);
+    return std::make_unique<machines::ReportAtEnd<TwoAxisReader>>(TwoAxisReader::open(path, options), warnings);
   }
   machines::VerifyProfile verify_profile(const machines::ReadOptions& read) const override {
     machines::VerifyProfile p;

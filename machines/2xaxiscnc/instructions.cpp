@@ -30,13 +30,13 @@ bool is_artcam_import(std::string_view text) {
 void TwoAxisReader::instruction(std::string_view text, std::size_t column, Command& out, bool& produced) {
   const Classified c = classify(text);
   if (c.kind == Instruction::Unknown) {
-    diagnose(Diagnostic::Severity::Error, column,
+    diagnose(toolpath::Severity::Error, column,
              fmt::format("unknown instruction `{}`: expected a (comment), XHYH, X0Y0, SpEn, M03, M05, Out1..Out4, "
                          "P<seconds>, Imp_<pin>_<interval>_<count>, A<mm>, AH or RunScript_<name>.script", toolpath::excerpt(text)));
     return;
   }
   if (c.case_differs)
-    diagnose(Diagnostic::Severity::Warning, column, fmt::format("`{}` is written in another case than the format's", toolpath::excerpt(text)));
+    diagnose(toolpath::Severity::Warning, column, fmt::format("`{}` is written in another case than the format's", toolpath::excerpt(text)));
   const std::size_t arg_column = column + c.argument_offset;
   out.clear();
   auto spindle = [&](bool on, std::string_view source) {
@@ -63,7 +63,7 @@ void TwoAxisReader::instruction(std::string_view text, std::size_t column, Comma
       break;
     case Instruction::ArtCamMarker:
     case Instruction::G90Marker:
-      diagnose(Diagnostic::Severity::Error, column,
+      diagnose(toolpath::Severity::Error, column,
                fmt::format("`{}` converts absolute coordinates only in the first frame of a program: ignored", toolpath::excerpt(text)));
       return;
     case Instruction::HomeXY:
@@ -101,7 +101,7 @@ void TwoAxisReader::instruction(std::string_view text, std::size_t column, Comma
       double s = 0;
       if (!read_number(c.argument, arg_column, s)) return;
       if (s < 0) {
-        diagnose(Diagnostic::Severity::Error, arg_column, fmt::format("negative pause `{}`: expected seconds >= 0", toolpath::excerpt(text)));
+        diagnose(toolpath::Severity::Error, arg_column, fmt::format("negative pause `{}`: expected seconds >= 0", toolpath::excerpt(text)));
         return;
       }
       if (options_.single_precision) s = as_single(s);
@@ -135,7 +135,7 @@ void TwoAxisReader::instruction(std::string_view text, std::size_t column, Comma
         at += cut + 1;
       }
       if (n != 3) {
-        diagnose(Diagnostic::Severity::Error, column,
+        diagnose(toolpath::Severity::Error, column,
                  fmt::format("malformed pulse instruction `{}`: expected Imp_<pin>_<interval>_<count>", toolpath::excerpt(text)));
         return;
       }
@@ -146,7 +146,7 @@ void TwoAxisReader::instruction(std::string_view text, std::size_t column, Comma
       // fuzzing): an LPT port has 25 pins; a billion pulses is far beyond any real program.
       if (v[0] < 1 || v[0] > 25 || v[0] != std::floor(v[0]) || v[2] < 0 || v[2] > 1e9 || v[2] != std::floor(v[2]) ||
           v[1] < 0) {
-        diagnose(Diagnostic::Severity::Error, arg_column,
+        diagnose(toolpath::Severity::Error, arg_column,
                  fmt::format("pulse instruction `{}`: the pin must be whole in 1..25, the count whole in 0..1e9, the "
                              "interval not negative", toolpath::excerpt(text)));
         return;
@@ -161,7 +161,7 @@ void TwoAxisReader::instruction(std::string_view text, std::size_t column, Comma
     }
     case Instruction::Script:
       if (!options_.scripts_folder.empty()) return run_script(c.argument, column, out, produced);
-      diagnose(Diagnostic::Severity::Warning, column,
+      diagnose(toolpath::Severity::Warning, column,
                fmt::format("script `{}` is not read (no scripts folder): taken as making no motion", toolpath::excerpt(c.argument)));
       out.name = "@script_call";
       out.set("name", Value::make_string(std::string(c.argument)));
@@ -177,16 +177,16 @@ void TwoAxisReader::run_script(std::string_view name, std::size_t column, Comman
   const std::string file = (std::filesystem::path(options_.scripts_folder) / std::string(name)).string();
   for (const Input& i : inputs_)
     if (i.script == file) {
-      diagnose(Diagnostic::Severity::Error, column, fmt::format("script `{}` runs itself: skipped", toolpath::excerpt(name)));
+      diagnose(toolpath::Severity::Error, column, fmt::format("script `{}` runs itself: skipped", toolpath::excerpt(name)));
       return;
     }
   if (inputs_.size() > kMaxScriptDepth) {
-    diagnose(Diagnostic::Severity::Error, column, fmt::format("scripts nest deeper than {}: `{}` skipped", kMaxScriptDepth, toolpath::excerpt(name)));
+    diagnose(toolpath::Severity::Error, column, fmt::format("scripts nest deeper than {}: `{}` skipped", kMaxScriptDepth, toolpath::excerpt(name)));
     return;
   }
   auto stream = std::make_unique<std::ifstream>(file, std::ios::binary);
   if (!*stream) {
-    diagnose(Diagnostic::Severity::Error, column, fmt::format("cannot open script `{}`: skipped", toolpath::excerpt(file, 200)));
+    diagnose(toolpath::Severity::Error, column, fmt::format("cannot open script `{}`: skipped", toolpath::excerpt(file, 200)));
     return;
   }
   out.name = "@script_call";

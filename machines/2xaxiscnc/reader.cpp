@@ -30,7 +30,7 @@ Value number(double v) { return Value::make_numeric(v); }
 }  // namespace
 
 TwoAxisReader::TwoAxisReader(std::istream& in, std::string file_name, Options options)
-    : file_name_(std::move(file_name)), options_(std::move(options)) {
+    : file_name_(std::move(file_name)), options_(std::move(options)), diagnostics_(options_.max_diagnostics) {
   inputs_.reserve(kMaxScriptDepth + 1);  // string_views into a buffer stay valid while a script opens
   inputs_.emplace_back();
   inputs_.back().in = &in;
@@ -93,25 +93,22 @@ bool TwoAxisReader::next_line(std::string_view& line) {
   }
 }
 
-void TwoAxisReader::diagnose(Diagnostic::Severity s, std::size_t column, std::string message) {
-  ++diagnostic_total_;
-  if (s == Diagnostic::Severity::Error) ++error_total_;
-  if (diagnostics_.size() < options_.max_diagnostics)
-    diagnostics_.push_back({s, inputs_.back().line, column, std::move(message), inputs_.back().script});
+void TwoAxisReader::diagnose(toolpath::Severity s, std::size_t column, std::string message) {
+  diagnostics_.add({{inputs_.back().script, inputs_.back().line, column}, s, std::move(message)});
 }
 
 bool TwoAxisReader::read_number(std::string_view text, std::size_t column, double& value) {
   const Number n = parse_number(text);
   switch (n.status) {
     case Number::Status::Malformed:
-      diagnose(Diagnostic::Severity::Error, column,
+      diagnose(toolpath::Severity::Error, column,
                fmt::format("malformed number `{}`: expected [-]digits[,digits]", toolpath::excerpt(text)));
       return false;
     case Number::Status::OutOfRange:
-      diagnose(Diagnostic::Severity::Error, column, fmt::format("number `{}` is beyond the single-precision range", toolpath::excerpt(text)));
+      diagnose(toolpath::Severity::Error, column, fmt::format("number `{}` is beyond the single-precision range", toolpath::excerpt(text)));
       return false;
     case Number::Status::NonPortable:
-      diagnose(Diagnostic::Severity::Warning, column,
+      diagnose(toolpath::Severity::Warning, column,
                fmt::format("non-portable number `{}`: the application expects a decimal comma and no exponent", toolpath::excerpt(text)));
       break;
     case Number::Status::Ok: break;
@@ -185,7 +182,7 @@ void TwoAxisReader::frame(std::string_view text, Command& out, bool& produced) {
   const bool first = first_frame_ && !in_script;
   if (!in_script) first_frame_ = false;
   if (f.count > 3) {
-    diagnose(Diagnostic::Severity::Error, f.columns[3],
+    diagnose(toolpath::Severity::Error, f.columns[3],
              fmt::format("{} commands in a frame: expected 1 (instruction or comment), 2 (dx dy) or 3 (dx dy coefficient)",
                          f.count));
     return;
@@ -233,7 +230,7 @@ void TwoAxisReader::move(const Frame& f, Command& out) {
     const double lo = options_.single_precision ? as_single(kMinCoef) : kMinCoef;
     if (!(k >= lo && k <= kMaxCoef)) {
       const double clamped = k < lo ? lo : kMaxCoef;
-      diagnose(Diagnostic::Severity::Error, f.columns[2],
+      diagnose(toolpath::Severity::Error, f.columns[2],
                fmt::format("speed coefficient {} out of range 0,0001..1: clamped to {}", toolpath::excerpt(f.commands[2]),
                            clamped == kMaxCoef ? "1" : "0,0001"));
       k = clamped;

@@ -13,6 +13,7 @@
 
 #include "machines/2xaxiscnc/frame.hpp"
 #include "toolpath/command.hpp"
+#include "toolpath/diagnostic.hpp"
 #include "toolpath/source.hpp"
 
 namespace twoaxis {
@@ -36,15 +37,6 @@ struct Options {
   std::size_t max_diagnostics = 1000;  // kept; the rest are only counted
 };
 
-struct Diagnostic {
-  enum class Severity { Warning, Error };
-  Severity severity = Severity::Error;
-  std::size_t line = 0;    // 1-based
-  std::size_t column = 0;  // 1-based byte column
-  std::string message;
-  std::string file;  // the script file the frame is in; empty: the program itself
-};
-
 class TwoAxisReader final : public toolpath::CommandSource {
 public:
   static constexpr std::size_t kMaxScriptDepth = 16;
@@ -62,12 +54,14 @@ public:
   // toolpath::InputError at that line.
   bool next(toolpath::Command& out) override;
 
-  // Line of the command returned last, in the program or, for `script_name()`, in that script.
-  std::size_t line() const { return command_line_; }
+  // Line of the command returned last in the program; 0 when it came from a script.
+  std::size_t line() const { return command_script_.empty() ? command_line_ : 0; }
+  // Line of the command returned last in `script_name()`, or in the program.
+  std::size_t script_line() const { return command_line_; }
   const std::string& script_name() const { return command_script_; }
-  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
-  std::size_t diagnostic_count() const { return diagnostic_total_; }
-  std::size_t error_count() const { return error_total_; }
+  // Errors: frames skipped or clamped (the motion is not the program's). A diagnostic's file is the
+  // script it is in; empty: the program.
+  const toolpath::Diagnostics& diagnostics() const { return diagnostics_; }
   const std::string& file_name() const { return file_name_; }
 
 private:
@@ -76,7 +70,7 @@ private:
   void instruction(std::string_view text, std::size_t column, toolpath::Command& out, bool& produced);
   void move(const Frame& f, toolpath::Command& out);
   void end_program(toolpath::Command& out);
-  void diagnose(Diagnostic::Severity s, std::size_t column, std::string message);
+  void diagnose(toolpath::Severity s, std::size_t column, std::string message);
   bool read_number(std::string_view text, std::size_t column, double& value);
   void run_script(std::string_view name, std::size_t column, toolpath::Command& out, bool& produced);
 
@@ -103,8 +97,7 @@ private:
   bool spindle_ = false;
   std::array<bool, 4> relays_{};
   double path_length_ = 0, motion_minutes_ = 0, pause_seconds_ = 0;
-  std::vector<Diagnostic> diagnostics_;
-  std::size_t diagnostic_total_ = 0, error_total_ = 0;
+  toolpath::Diagnostics diagnostics_;
   std::size_t index_ = 0;
 };
 

@@ -1,39 +1,14 @@
 #include "machines/pikocnc/controller.hpp"
 
-#include <fmt/format.h>
-
 #include <array>
 
 #include "machines/pikocnc/dialect.hpp"
 #include "machines/pikocnc/reader.hpp"
+#include "machines/registry/report_at_end.hpp"
 #include "toolpath/value.hpp"
 
 namespace pikocnc {
 namespace {
-
-// The reader's warnings, printed when the program ends (the reader goes on after each of them).
-class Reporting final : public machines::ProgramSource {
-public:
-  Reporting(std::unique_ptr<PikoReader> reader, std::ostream& warnings) : reader_(std::move(reader)), warnings_(warnings) {}
-  bool next(toolpath::Command& out) override {
-    if (reader_->next(out)) return true;
-    if (!reported_) {
-      reported_ = true;
-      const auto& d = reader_->diagnostics();
-      for (const auto& x : d.kept())
-        warnings_ << fmt::format("{}:{}:{}: warning: {}\n", reader_->file_name(), x.line, x.column, x.message);
-      if (d.total() > d.kept().size())
-        warnings_ << fmt::format("{}: {} more warnings not shown\n", reader_->file_name(), d.total() - d.kept().size());
-    }
-    return false;
-  }
-  std::size_t line() const override { return reader_->line(); }
-
-private:
-  std::unique_ptr<PikoReader> reader_;
-  std::ostream& warnings_;
-  bool reported_ = false;
-};
 
 class PikoCnc final : public machines::Controller {
 public:

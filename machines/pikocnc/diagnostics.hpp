@@ -1,36 +1,24 @@
 // Warnings of the interpreter: ignored codes and words, interpretation fallbacks. Never fatal;
-// fatal problems are thrown as toolpath::InputError.
+// fatal problems are thrown as toolpath::InputError. The shape is every library's
+// (toolpath/diagnostic.hpp); these are all warnings in the program itself (no file).
 #pragma once
 
 #include <cstddef>
 #include <string>
-#include <vector>
 
-#include "toolpath/error.hpp"
+#include "toolpath/diagnostic.hpp"
 
 namespace pikocnc {
 
-struct Diagnostic {
-  std::size_t line = 0;    // 1-based line of the NC file
-  std::size_t column = 0;  // 1-based column of the offending text
-  std::string message;
-};
+using Diagnostic = toolpath::Diagnostic;
 
-// Keeps the first `limit` diagnostics and counts the rest, so memory stays flat on long programs.
-class Diagnostics {
+class Diagnostics : public toolpath::Diagnostics {
 public:
-  explicit Diagnostics(std::size_t limit = 1000) : limit_(limit) {}
+  using toolpath::Diagnostics::Diagnostics;
+  using toolpath::Diagnostics::add;
   void add(std::size_t line, std::size_t column, std::string message) {
-    ++total_;
-    if (kept_.size() < limit_) kept_.push_back({line, column, std::move(message)});
+    add({{"", line, column}, toolpath::Severity::Warning, std::move(message)});
   }
-  const std::vector<Diagnostic>& kept() const { return kept_; }
-  std::size_t total() const { return total_; }
-
-private:
-  std::size_t limit_;
-  std::size_t total_ = 0;
-  std::vector<Diagnostic> kept_;
 };
 
 }  // namespace pikocnc

@@ -1,45 +1,12 @@
 #include "machines/sinumerik/controller.hpp"
 
-#include <fmt/format.h>
-
 #include <array>
 
+#include "machines/registry/report_at_end.hpp"
 #include "machines/sinumerik/reader.hpp"
-#include "toolpath/error.hpp"
 
 namespace sinumerik {
 namespace {
-
-// Every diagnostic is printed when the program ends; errors (blocks that could not be executed: the
-// motion is not the program's) then fail with the first error's position.
-class Reporting final : public machines::ProgramSource {
-public:
-  Reporting(std::unique_ptr<SinumerikReader> reader, std::ostream& warnings) : reader_(std::move(reader)), warnings_(warnings) {}
-  bool next(toolpath::Command& out) override {
-    if (reader_->next(out)) return true;
-    if (reported_) return false;
-    reported_ = true;
-    const Diagnostic* first_error = nullptr;
-    for (const auto& d : reader_->diagnostics()) {
-      if (d.error && !first_error) first_error = &d;
-      warnings_ << fmt::format("{}:{}:{}: {}: {}\n", d.file, d.line, d.column, d.error ? "error" : "warning", d.message);
-    }
-    const std::size_t hidden = reader_->diagnostic_count() - reader_->diagnostics().size();
-    if (hidden > 0) warnings_ << fmt::format("{}: {} more diagnostics not shown\n", reader_->file_name(), hidden);
-    if (reader_->error_count() > 0) {
-      const Diagnostic& e = first_error ? *first_error : reader_->diagnostics().front();
-      throw toolpath::InputError({e.file, e.line, e.column},
-                                 fmt::format("{} error(s) in the program; the first: {}", reader_->error_count(), e.message));
-    }
-    return false;
-  }
-  std::size_t line() const override { return reader_->line(); }
-
-private:
-  std::unique_ptr<SinumerikReader> reader_;
-  std::ostream& warnings_;
-  bool reported_ = false;
-};
 
 class Sinumerik final : public machines::Controller {
 public:
@@ -56,7 +23,7 @@ public:
                                                 const machines::ReadOptions& read, std::ostream& warnings) const override {
     (void)dialect;
     (void)read;
-    return std::make_unique<Reporting>(SinumerikReader::open(path), warnings);
+    return std::make_unique<machines::ReportAtEnd<SinumerikReader>>(SinumerikReader::open(path), warnings);
   }
 };
 

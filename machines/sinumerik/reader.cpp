@@ -121,8 +121,7 @@ struct SinumerikReader::Impl {
   bool folder_listed = false;
   std::map<std::string, double, std::less<>> vars;  // upper-case name
   ncmodel::MotionOut out;
-  std::vector<Diagnostic> diagnostics;
-  std::size_t diagnostic_total = 0, error_total = 0;
+  toolpath::Diagnostics diagnostics{options.max_diagnostics};
   std::set<std::string, std::less<>> warned_words;
   std::size_t executed = 0;
   std::size_t current_line = 0, main_line = 0;
@@ -170,11 +169,9 @@ struct SinumerikReader::Impl {
   }
 
   void diagnose(bool error, std::size_t column, std::string message) {
-    ++diagnostic_total;
-    if (error) ++error_total;
-    if (diagnostics.size() >= options.max_diagnostics) return;
-    const Source& s = stack.back();
-    diagnostics.push_back({s.name, current_line, column, std::move(message), error});
+    diagnostics.add({{stack.back().name, current_line, column},
+                     error ? toolpath::Severity::Error : toolpath::Severity::Warning,
+                     std::move(message)});
   }
 
   void warn_once(const std::string& key, std::size_t column, std::string message) {
@@ -919,8 +916,6 @@ bool SinumerikReader::next(toolpath::Command& out) {
 
 std::size_t SinumerikReader::line() const { return impl_->main_line; }
 const std::string& SinumerikReader::file_name() const { return impl_->main_name; }
-const std::vector<Diagnostic>& SinumerikReader::diagnostics() const { return impl_->diagnostics; }
-std::size_t SinumerikReader::diagnostic_count() const { return impl_->diagnostic_total; }
-std::size_t SinumerikReader::error_count() const { return impl_->error_total; }
+const toolpath::Diagnostics& SinumerikReader::diagnostics() const { return impl_->diagnostics; }
 
 }  // namespace sinumerik

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "toolpath/command.hpp"
+#include "toolpath/diagnostic.hpp"
 #include "toolpath/source.hpp"
 
 namespace sinumerik {
@@ -19,13 +20,6 @@ struct Options {
   std::size_t max_call_depth = 16;                // subprograms calling subprograms
   std::size_t max_diagnostics = 1000;             // kept; the rest are counted
   double arc_tolerance = 0.002;                   // mm: a CR= chord longer than 2|CR| by more is an error
-};
-
-struct Diagnostic {
-  std::string file;
-  std::size_t line = 0, column = 0;  // 1-based
-  std::string message;
-  bool error = false;  // the motion is not the program's (a block was skipped)
 };
 
 class SinumerikReader final : public toolpath::CommandSource {
@@ -45,9 +39,8 @@ public:
   // Line of the command returned last in the main program; 0 when it came from a subprogram.
   std::size_t line() const;
   const std::string& file_name() const;
-  const std::vector<Diagnostic>& diagnostics() const;
-  std::size_t diagnostic_count() const;
-  std::size_t error_count() const;
+  // Errors: the motion is not the program's (a block was skipped).
+  const toolpath::Diagnostics& diagnostics() const;
 
 private:
   struct Impl;

@@ -96,7 +96,7 @@ EngineOptions engine_options(const Arguments& args, std::ostream* log) {
 }
 
 void print_machine_warnings(const prp::MachineParameters& machine, std::ostream& err) {
-  for (const auto& w : machine.warnings()) err << w.text(true) << '\n';
+  for (const auto& w : machine.warnings()) err << w.text() << '\n';
 }
 
 void print_machine_warnings(const Engine& engine, std::ostream& err) {

@@ -46,11 +46,11 @@ toolpath::SourcePosition Loader::at(std::size_t column, std::size_t line) const 
 }
 
 void Loader::error(std::size_t column, std::string message, std::size_t line) {
-  errors_.push_back({at(column, line), std::move(message)});
+  errors_.push_back({at(column, line), toolpath::Severity::Error, std::move(message)});
 }
 
 void Loader::warning(std::size_t column, std::string message, std::size_t line) {
-  params_.warnings_.push_back({at(column, line), std::move(message)});
+  params_.warnings_.push_back({at(column, line), toolpath::Severity::Warning, std::move(message)});
 }
 
 MachineParameters Loader::run(std::string_view text) {
@@ -93,11 +93,11 @@ MachineParameters Loader::finish() {
 }
 
 void Loader::error_at(toolpath::SourcePosition where, std::string message) {
-  errors_.push_back({std::move(where), std::move(message)});
+  errors_.push_back({std::move(where), toolpath::Severity::Error, std::move(message)});
 }
 
 void Loader::warning_at(toolpath::SourcePosition where, std::string message) {
-  params_.warnings_.push_back({std::move(where), std::move(message)});
+  params_.warnings_.push_back({std::move(where), toolpath::Severity::Warning, std::move(message)});
 }
 
 bool Loader::add_parameter(Parameter p) {

@@ -49,10 +49,6 @@ std::string_view type_name(VarType type) {
   return "?";
 }
 
-std::string Diagnostic::text(bool warning) const {
-  return fmt::format("{}:{}:{}: {}{}", where.file, where.line, where.column, warning ? "warning: " : "", message);
-}
-
 LoadError::LoadError(std::vector<Diagnostic> errors)
     : std::runtime_error(join_errors(errors)), errors_(std::move(errors)) {}
 

@@ -31,70 +31,70 @@ TEST_P(LoadErrors, ExactMessageAndPosition) {
 }
 
 const ErrorCase kErrorCases[] = {
-    {"Logical", "@pre_processor\narc_exist = maybe\nendp\n", "t.prp:2:13: expected Y or N, found `maybe`"},
+    {"Logical", "@pre_processor\narc_exist = maybe\nendp\n", "t.prp:2:13: error: expected Y or N, found `maybe`"},
     {"NumberWithUnit", "@pre_processor\narc_max_chord = 30 mm\nendp\n",
-     "t.prp:2:20: expected a number, or number ',' number, found `mm`"},
+     "t.prp:2:20: error: expected a number, or number ',' number, found `mm`"},
     {"NumberThreeHalves", "@pre_processor\nsafety_dist = 2, 0.0787, 1\nendp\n",
-     "t.prp:2:24: expected a number, or number ',' number"},
+     "t.prp:2:24: error: expected a number, or number ',' number"},
     {"PointTooShort", "@pre_processor\ndflt_start = 1 2\nendp\n",
-     "t.prp:2:17: expected 3 numbers, optionally ',' and 3 more"},
+     "t.prp:2:17: error: expected 3 numbers, optionally ',' and 3 more"},
     {"PointHalvesDiffer", "@pre_processor\ndflt_start = 1 2 3, 4 5\nendp\n",
-     "t.prp:2:24: expected 3 numbers, optionally ',' and 3 more"},
+     "t.prp:2:24: error: expected 3 numbers, optionally ',' and 3 more"},
     {"PointDecimalComma", "@pre_processor\ndflt_end = 1,5 2 3\nendp\n",
-     "t.prp:2:13: expected 3 numbers, optionally ',' and 3 more"},
-    {"Integer", "@pre_processor\nprog_num_min = 12.5\nendp\n", "t.prp:2:16: expected an integer, found `12.5`"},
+     "t.prp:2:13: error: expected 3 numbers, optionally ',' and 3 more"},
+    {"Integer", "@pre_processor\nprog_num_min = 12.5\nendp\n", "t.prp:2:16: error: expected an integer, found `12.5`"},
     {"IntegerRange", "@pre_processor\nprog_num_max = 1000000000\nendp\n",
-     "t.prp:2:16: integer out of range (-999999999 .. 999999999)"},
+     "t.prp:2:16: error: integer out of range (-999999999 .. 999999999)"},
     {"NumberRange", "@pre_processor\nrapid_feed = 1e301\nendp\n",
-     "t.prp:2:14: number out of range (-1E300 .. 1E300)"},
+     "t.prp:2:14: error: number out of range (-1E300 .. 1E300)"},
     {"Enumeration", "@pre_processor\nmachine_plane = XZ\nendp\n",
-     "t.prp:2:17: expected XY, YZ, ZX or ZC, found `XZ`"},
+     "t.prp:2:17: error: expected XY, YZ, ZX or ZC, found `XZ`"},
     // A wrong file's megabyte token is quoted by its start.
     {"LongToken", "@pre_processor\nmachine_plane = " + std::string(100000, 'Q') + "\nendp\n",
-     "t.prp:2:17: expected XY, YZ, ZX or ZC, found `" + std::string(40, 'Q') + "...`"},
-    {"NoHeader", "; comment\narc_exist = Y\nendp\n", "t.prp:2:1: expected `@pre_processor` before the first statement"},
-    {"EmptyFile", "", "t.prp:1:1: expected `@pre_processor`: the file has no parameter section"},
+     "t.prp:2:17: error: expected XY, YZ, ZX or ZC, found `" + std::string(40, 'Q') + "...`"},
+    {"NoHeader", "; comment\narc_exist = Y\nendp\n", "t.prp:2:1: error: expected `@pre_processor` before the first statement"},
+    {"EmptyFile", "", "t.prp:1:1: error: expected `@pre_processor`: the file has no parameter section"},
     {"NoEndp", "@pre_processor\narc_exist = Y",
-     "t.prp:2:14: expected `endp` before the end of the file (is the file truncated?)"},
+     "t.prp:2:14: error: expected `endp` before the end of the file (is the file truncated?)"},
     {"NoEquals", "@pre_processor\n   T_angle m7_m8_3\nendp\n",
-     "t.prp:2:4: expected `key = value` (a key starts with a letter or '_')"},
+     "t.prp:2:4: error: expected `key = value` (a key starts with a letter or '_')"},
     {"KeyStartsWithDigit", "@pre_processor\n4th_axis = X\nendp\n",
-     "t.prp:2:1: expected `key = value` (a key starts with a letter or '_')"},
-    {"HeaderTwice", "@pre_processor\n@pre_processor\nendp\n", "t.prp:2:1: `@pre_processor` appears twice"},
+     "t.prp:2:1: error: expected `key = value` (a key starts with a letter or '_')"},
+    {"HeaderTwice", "@pre_processor\n@pre_processor\nendp\n", "t.prp:2:1: error: `@pre_processor` appears twice"},
     {"DrillBase", "@pre_processor\ndrill_type = G81 Drill Y\nendp\n",
-     "t.prp:2:18: expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, BORING, R_BORING, F_BORING or "
+     "t.prp:2:18: error: expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, BORING, R_BORING, F_BORING or "
      "None), found `Drill`"},
     {"DrillLegacyBase", "@pre_processor\ndrill_type = Spot Y\nendp\n",
-     "t.prp:2:14: expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, BORING, R_BORING, F_BORING or "
+     "t.prp:2:14: error: expected a drill base type (DRILLING, F_DRILL, PECK, TAPPING, BORING, R_BORING, F_BORING or "
      "None), found `Spot`"},
     {"RecordFlag", "@pre_processor\ndrill_type = G81 Drilling Maybe\nendp\n",
-     "t.prp:2:27: expected Y or N, found `Maybe` (a record is `name base Y|N {param}`)"},
+     "t.prp:2:27: error: expected Y or N, found `Maybe` (a record is `name base Y|N {param}`)"},
     {"RecordTooShort", "@pre_processor\nturn_type = T1\nendp\n",
-     "t.prp:2:15: expected `name Y|N {param}` or `name TYPE`"},
+     "t.prp:2:15: error: expected `name Y|N {param}` or `name TYPE`"},
     {"RecordIdentifier", "@pre_processor\njob_opt_type = OPT1 Y 2nd_feed\nendp\n",
-     "t.prp:2:23: `2nd_feed` is not a valid name (a letter, then letters, digits or '_', at most 60 characters)"},
+     "t.prp:2:23: error: `2nd_feed` is not a valid name (a letter, then letters, digits or '_', at most 60 characters)"},
     {"RecordDuplicate", "@pre_processor\ndrill_type = Peck Peck Y\ndrill_type = peck Peck N\nendp\n",
-     "t.prp:3:14: `drill_type` declares `peck` twice (first at line 2)"},
+     "t.prp:3:14: error: `drill_type` declares `peck` twice (first at line 2)"},
     {"OptionsShape", "@pre_processor\noptions = COLENT Y\nendp\n",
-     "t.prp:2:18: expected `name TYPE` (TYPE: INTEGER, LOGICAL, NUMERIC or STRING)"},
+     "t.prp:2:18: error: expected `name TYPE` (TYPE: INTEGER, LOGICAL, NUMERIC or STRING)"},
     {"DrillTyped", "@pre_processor\ndrill_type = Delay NUMERIC\nendp\n",
-     "t.prp:2:20: `drill_type` records declare cycles, not typed variables"},
+     "t.prp:2:20: error: `drill_type` records declare cycles, not typed variables"},
     {"TypeConflict", "@pre_processor\noptions = Delay LOGICAL\ndrill_type = Peck Peck Y Delay\nendp\n",
-     "t.prp:3:26: `Delay` is declared NUMERIC here but LOGICAL at line 2"},
+     "t.prp:3:26: error: `Delay` is declared NUMERIC here but LOGICAL at line 2"},
     {"ProgramNumberRange", "@pre_processor\nprog_num_min = 5000\nprog_num_max = 8999\nprog_num_dflt = 100\nendp\n",
-     "t.prp:4:17: prog_num_dflt 100 is below prog_num_min 5000"},
+     "t.prp:4:17: error: prog_num_dflt 100 is below prog_num_min 5000"},
     {"ProcedureNumberRange", "@pre_processor\nproc_num_dflt = 9000\nproc_num_max = 8999\nendp\n",
-     "t.prp:3:16: proc_num_dflt 9000 is above proc_num_max 8999"},
+     "t.prp:3:16: error: proc_num_dflt 9000 is above proc_num_max 8999"},
     {"ChordNotPositive", "@pre_processor\narc_max_chord = 30, 0\nendp\n",
-     "t.prp:2:17: arc_max_chord must be greater than 0"},
+     "t.prp:2:17: error: arc_max_chord must be greater than 0"},
     {"DeviationNotPositive", "@pre_processor\narc_max_deviation = 0.01, 0\nendp\n",
-     "t.prp:2:21: arc_max_deviation must be greater than 0"},
-    {"MaxAngle", "@pre_processor\narc_max_angle = 361\nendp\n", "t.prp:2:17: arc_max_angle must be in (0, 360] degrees"},
-    {"NegativeEpsilon", "@pre_processor\neps_line = -0.1\nendp\n", "t.prp:2:12: eps_line must not be negative"},
+     "t.prp:2:21: error: arc_max_deviation must be greater than 0"},
+    {"MaxAngle", "@pre_processor\narc_max_angle = 361\nendp\n", "t.prp:2:17: error: arc_max_angle must be in (0, 360] degrees"},
+    {"NegativeEpsilon", "@pre_processor\neps_line = -0.1\nendp\n", "t.prp:2:12: error: eps_line must not be negative"},
     {"AllErrorsAtOnce", "@pre_processor\narc_exist = maybe\ngen_procs = X\narc_max_angle = 0\nendp\n",
-     "t.prp:2:13: expected Y or N, found `maybe`\n"
-     "t.prp:3:13: expected Y, N, C or D, found `X`\n"
-     "t.prp:4:17: arc_max_angle must be in (0, 360] degrees"},
+     "t.prp:2:13: error: expected Y or N, found `maybe`\n"
+     "t.prp:3:13: error: expected Y, N, C or D, found `X`\n"
+     "t.prp:4:17: error: arc_max_angle must be in (0, 360] degrees"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Classes, LoadErrors, testing::ValuesIn(kErrorCases),
@@ -111,7 +111,7 @@ class LoadWarnings : public testing::TestWithParam<WarningCase> {};
 TEST_P(LoadWarnings, LoadingGoesOn) {
   auto p = prp::load_source(GetParam().text, "w.prp", prp::Units::Metric);
   std::vector<std::string> got;
-  for (const auto& w : p.warnings()) got.push_back(w.text(true));
+  for (const auto& w : p.warnings()) got.push_back(w.text());
   EXPECT_EQ(got, GetParam().expected);
 }
 

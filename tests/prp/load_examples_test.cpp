@@ -19,7 +19,7 @@ std::vector<std::string> names(const std::vector<const prp::Record*>& records) {
 
 std::vector<std::string> texts(const std::vector<prp::Diagnostic>& diagnostics) {
   std::vector<std::string> out;
-  for (const auto& d : diagnostics) out.push_back(d.text(true));
+  for (const auto& d : diagnostics) out.push_back(d.text());
   return out;
 }
 

@@ -25,7 +25,7 @@ TEST_P(Leniency, LoadsWithTheseWarnings) {
   const auto& c = GetParam();
   auto p = prp::load_source(std::string("@pre_processor\n") + c.body + "endp\n", "r.prp", Units::Metric);
   std::vector<std::string> got;
-  for (const auto& w : p.warnings()) got.push_back(w.text(true));
+  for (const auto& w : p.warnings()) got.push_back(w.text());
   EXPECT_EQ(got, c.warnings);
   c.check(p);
 }
@@ -74,7 +74,7 @@ INSTANTIATE_TEST_SUITE_P(RealPosts, Leniency, testing::ValuesIn(kCases),
 TEST(MacFile, OldStyleMachineFileLoads) {
   auto p = prp::load_file("prp/data/fanuc-old.MAC", Units::Inch);
   std::vector<std::string> got;
-  for (const auto& w : p.warnings()) got.push_back(w.text(true));
+  for (const auto& w : p.warnings()) got.push_back(w.text());
   EXPECT_EQ(got, std::vector<std::string>{
                      "prp/data/fanuc-old.MAC:9:1: warning: unknown key `my_old_switch`: kept as text for the post"});
   EXPECT_EQ(p.text("gpp_file_ext"), "TAP");

@@ -26,7 +26,7 @@ std::string load_error(const std::string& text) {
 
 std::vector<std::string> warnings(const prp::MachineParameters& p) {
   std::vector<std::string> out;
-  for (const auto& w : p.warnings()) out.push_back(w.text(true));
+  for (const auto& w : p.warnings()) out.push_back(w.text());
   return out;
 }
 
@@ -151,7 +151,7 @@ TEST(Vmid, AsSolidCAMWritesThem) {
   EXPECT_TRUE(*v->initial == toolpath::Value::make_integer(3));
   EXPECT_EQ(load_error("<Machine><UserDefParams><MachineParams>\n<Param GppName=\"iX\" ValueType=\"4\" "
                        "Value=\"3.500000\"/>\n</MachineParams></UserDefParams></Machine>"),
-            "m.vmid:2:42: Value=\"3.500000\": expected an integer (ValueType 4)");
+            "m.vmid:2:42: error: Value=\"3.500000\": expected an integer (ValueType 4)");
 }
 
 TEST(Vmid, DrillCyclesBecomeDrillTypeRecords) {
@@ -251,42 +251,42 @@ TEST_P(VmidErrors, ExactMessageAndPosition) { EXPECT_EQ(load_error(GetParam().te
 
 const ErrorCase kErrorCases[] = {
     {"UnclosedElement", "<Machine>\n  <Controller>\n</Machine>\n",
-     "m.vmid:3:3: malformed XML: Start-end tags mismatch (expected a well-formed SolidCAM VMID file)"},
+     "m.vmid:3:3: error: malformed XML: Start-end tags mismatch (expected a well-formed SolidCAM VMID file)"},
     {"TruncatedFile", "<Machine>\n  <Controller Ver=\"9",
-     "m.vmid:2:20: malformed XML: Error parsing element attribute (expected a well-formed SolidCAM VMID file)"},
+     "m.vmid:2:20: error: malformed XML: Error parsing element attribute (expected a well-formed SolidCAM VMID file)"},
     {"OtherRoot", "<?xml version=\"1.0\"?>\n<Project/>\n",
-     "m.vmid:2:1: expected the root element <Machine> of a SolidCAM VMID file, found <Project>"},
+     "m.vmid:2:1: error: expected the root element <Machine> of a SolidCAM VMID file, found <Project>"},
     {"BadFlag", "<Machine>\n <ArcExecution SupportArcs=\"yes\"/>\n</Machine>\n",
-     "m.vmid:2:29: SupportArcs=\"yes\" (PRP arc_exist): expected 0 or 1"},
+     "m.vmid:2:29: error: SupportArcs=\"yes\" (PRP arc_exist): expected 0 or 1"},
     {"BadNumber", "<Machine>\n <ArcExecution MaxChordLength=\"3,5\"/>\n</Machine>\n",
-     "m.vmid:2:32: MaxChordLength=\"3,5\" (PRP arc_max_chord): expected a number"},
+     "m.vmid:2:32: error: MaxChordLength=\"3,5\" (PRP arc_max_chord): expected a number"},
     {"BadInteger", "<Machine><ProgramNumbers MinProgramNumber=\"1.5\"/></Machine>",
-     "m.vmid:1:44: MinProgramNumber=\"1.5\" (PRP prog_num_min): expected an integer (-999999999 .. 999999999)"},
+     "m.vmid:1:44: error: MinProgramNumber=\"1.5\" (PRP prog_num_min): expected an integer (-999999999 .. 999999999)"},
     {"BadLogicalValue",
      "<Machine><UserDefParams><MachineParams>\n<Param GppName=\"bX\" ValueType=\"1\" Value=\"2\"/>\n"
      "</MachineParams></UserDefParams></Machine>",
-     "m.vmid:2:42: Value=\"2\": expected 0 or 1, a yes/no option (ValueType 1)"},
+     "m.vmid:2:42: error: Value=\"2\": expected 0 or 1, a yes/no option (ValueType 1)"},
     {"BadNumericValue",
      "<Machine><UserDefParams><MachineParams>\n<Param GppName=\"nX\" ValueType=\"3\" Value=\"abc\"/>\n"
      "</MachineParams></UserDefParams></Machine>",
-     "m.vmid:2:42: Value=\"abc\": expected a number (ValueType 3)"},
+     "m.vmid:2:42: error: Value=\"abc\": expected a number (ValueType 3)"},
     {"BadIntegerValue",
      "<Machine><UserDefParams><MachineParams>\n<Param GppName=\"iX\" ValueType=\"5\" Value=\"0.5\"/>\n"
      "</MachineParams></UserDefParams></Machine>",
-     "m.vmid:2:42: Value=\"0.5\": expected an integer (ValueType 5)"},
+     "m.vmid:2:42: error: Value=\"0.5\": expected an integer (ValueType 5)"},
     {"BadName",
      "<Machine><MillDrilCycles>\n<DrillCycle GppName=\"G84.2\" DrillType=\"3\"/>\n</MillDrilCycles></Machine>",
-     "m.vmid:2:22: GppName=\"G84.2\": expected a name (a letter, then letters, digits or '_', at most 60 "
+     "m.vmid:2:22: error: GppName=\"G84.2\": expected a name (a letter, then letters, digits or '_', at most 60 "
      "characters)"},
     {"TypeConflict",
      "<Machine><MillDrilCycles>\n<DrillCycle GppName=\"G82\" DrillType=\"1\"><CycleParams>"
      "<Param GppName=\"dwell\" ValueType=\"3\"/></CycleParams></DrillCycle>\n</MillDrilCycles>\n"
      "<UserDefParams><MachineParams><Param GppName=\"dwell\" ValueType=\"2\"/></MachineParams></UserDefParams>"
      "</Machine>",
-     "m.vmid:4:47: `dwell` is declared STRING here but NUMERIC at line 2"},
+     "m.vmid:4:47: error: `dwell` is declared STRING here but NUMERIC at line 2"},
     {"RangeCheckedAsInAPrp",
      "<Machine><ProgramNumbers MinProgramNumber=\"5000\"/>\n<ProgramNumbers DefaultProgramNumber=\"10\"/></Machine>",
-     "m.vmid:2:39: prog_num_dflt 10 is below prog_num_min 5000"},
+     "m.vmid:2:39: error: prog_num_dflt 10 is below prog_num_min 5000"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Classes, VmidErrors, testing::ValuesIn(kErrorCases),

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "postproc/cli/cli.hpp"
+#include "tests/support/golden_file.hpp"
 
 namespace test_support {
 
@@ -21,13 +22,6 @@ inline CliRun run_cli(std::vector<std::string> args) {
   std::ostringstream out, err;
   const int code = postproc::cli::main(args, out, err);
   return {code, out.str(), err.str()};
-}
-
-inline std::string slurp(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 }  // namespace test_support

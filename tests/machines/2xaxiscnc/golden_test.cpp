@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "machines/2xaxiscnc/reader.hpp"
+#include "tests/support/golden_file.hpp"
 #include "toolpath/trace_writer.hpp"
 
 namespace fs = std::filesystem;
@@ -23,13 +24,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const fs::path kRoot = "machines/2xaxiscnc/golden";
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 twoaxis::Options parse_options(const fs::path& file) {
   twoaxis::Options o;
@@ -45,18 +39,6 @@ twoaxis::Options parse_options(const fs::path& file) {
   return o;
 }
 
-void expect_file(const fs::path& file, const std::string& actual) {
-  if (std::getenv("POSTPROC_UPDATE_GOLDEN")) {
-    if (actual.empty()) {
-      fs::remove(file);
-    } else {
-      std::ofstream(file, std::ios::binary) << actual;
-    }
-    return;
-  }
-  EXPECT_EQ(fs::exists(file) ? slurp(file) : std::string(), actual) << file;
-}
-
 class Golden : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Golden, ReadsBackAsExpected) {
@@ -69,11 +51,11 @@ TEST_P(Golden, ReadsBackAsExpected) {
   while (reader->next(c)) writer.write(c);
   writer.flush();
   std::string diagnostics;
-  for (const auto& d : reader->diagnostics())
-    diagnostics += fmt::format("{}{}:{}: {}: {}\n", d.file.empty() ? "" : d.file + ":", d.line, d.column,
-                               d.severity == twoaxis::Diagnostic::Severity::Error ? "error" : "warning", d.message);
-  expect_file(dir / "expected.trace", trace.str());
-  expect_file(dir / "expected.diagnostics", diagnostics);
+  for (const auto& d : reader->diagnostics().kept())
+    diagnostics += fmt::format("{}{}:{}: {}: {}\n", d.where.file.empty() ? "" : d.where.file + ":", d.where.line,
+                               d.where.column, d.error() ? "error" : "warning", d.message);
+  test_support::expect_golden(dir / "expected.trace", trace.str());
+  test_support::expect_golden(dir / "expected.diagnostics", diagnostics);
 }
 
 std::vector<std::string> cases() {

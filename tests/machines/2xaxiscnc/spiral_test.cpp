@@ -93,7 +93,7 @@ TEST(TwoAxisSpiral, EndPointStaysExact) {
         EXPECT_NEAR(c.find("ypos")->as_number(), 0.0, single ? 1e-3 : 1e-9);
       }
     }
-    EXPECT_EQ(reader->error_count(), 0u);
+    EXPECT_EQ(reader->diagnostics().errors(), 0u);
     EXPECT_NEAR(last_move.find("xpos")->as_number(), std::round(end_x * 1e4) / 1e4, single ? 1e-3 : 1e-9);
     EXPECT_NEAR(last_move.find("ypos")->as_number(), std::round(end_y * 1e4) / 1e4, single ? 1e-3 : 1e-9);
   }

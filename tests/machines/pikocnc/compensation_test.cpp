@@ -122,7 +122,7 @@ std::vector<Motion> read_motion(const std::string& program, std::vector<std::str
     out.push_back(m);
   }
   if (warnings)
-    for (const auto& d : reader.diagnostics().kept()) warnings->push_back(std::to_string(d.line) + ": " + d.message);
+    for (const auto& d : reader.diagnostics().kept()) warnings->push_back(std::to_string(d.where.line) + ": " + d.message);
   return out;
 }
 

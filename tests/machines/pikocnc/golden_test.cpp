@@ -114,7 +114,7 @@ Result run_case(const fs::path& dir) {
     }
   }
   r.trace = out.str();
-  for (const auto& d : reader.diagnostics().kept()) r.warnings += std::to_string(d.line) + ":" + std::to_string(d.column) + ": " + d.message + "\n";
+  for (const auto& d : reader.diagnostics().kept()) r.warnings += std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + ": " + d.message + "\n";
   return r;
 }
 

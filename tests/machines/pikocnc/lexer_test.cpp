@@ -26,7 +26,7 @@ std::string render(std::string_view line) {
     if (b.has(l)) out += fmt::format("{}{} ", l, b.get(l));
   if (!out.empty()) out.pop_back();
   if (b.has_comment) out += fmt::format(" |{}|", b.comment);
-  for (const auto& x : d.kept()) out += fmt::format(" [{}:{} {}]", x.line, x.column, x.message);
+  for (const auto& x : d.kept()) out += fmt::format(" [{}:{} {}]", x.where.line, x.where.column, x.message);
   return out;
 }
 
