@@ -27,6 +27,7 @@ void MotionOut::number(Command& c, std::string_view name, double v) { c.set(name
 Command& MotionOut::add(std::string_view name) {
   queue_.emplace_back();
   queue_.back().name = std::string(name);
+  queue_.back().index = made_++;  // numbered in stream order, from 0
   return queue_.back();
 }
 

@@ -67,6 +67,7 @@ private:
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
   int spindle_ = 5;
   double speed_ = 0;
+  std::size_t made_ = 0;  // commands made so far
 };
 
 }  // namespace ncmodel

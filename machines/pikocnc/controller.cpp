@@ -31,7 +31,13 @@ public:
       options.comments_as_messages = false;
       options.cutter_compensation = false;  // the toolpath is the programmed contour
     }
-    return std::make_unique<Reporting>(PikoReader::open(path, options), warnings);
+    return std::make_unique<machines::ReportAtEnd<PikoReader>>(PikoReader::open(path, options), warnings);
+  }
+  machines::VerifyProfile verify_profile(const machines::ReadOptions& read) const override {
+    (void)read;
+    machines::VerifyProfile profile;
+    profile.tap_feeds_out_to_r = false;  // G84 is for a self-reversing tapping head
+    return profile;
   }
 };
 

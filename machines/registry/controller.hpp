@@ -45,6 +45,12 @@ struct VerifyProfile {
   bool planar_speeds = false;
   double machine_speed = 0;       // mm/min at coefficient 1
   double rapid_coefficient = 1;
+  // The program changes tools itself (M6); false: a tool change is the operator's (GRBL: the post
+  // asks for the tool in a comment), so tool changes are not compared.
+  bool tool_changes = true;
+  // A tapping cycle feeds out to the R level, then rapids to the return level (G84 of Fanuc, LinuxCNC,
+  // Sinumerik's CYCLE84); false: it feeds out all the way (a self-reversing tapping head: PikoCNC).
+  bool tap_feeds_out_to_r = true;
 };
 
 class Controller {

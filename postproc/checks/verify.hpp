@@ -46,6 +46,9 @@ struct Motion {
   std::int64_t tool = 0;            // Tool
   int spindle = 0;                  // Spindle: 1 CW (M3), -1 CCW (M4), 0 off
   double speed = 0.0;               // Spindle
+  // Expected only: a move the program may leave out. @end_program's move to the end position: many
+  // posts send the machine home instead (G28, G53), which the models do not place in the work frame.
+  bool optional = false;
   std::string name;                 // the command that made it ("@line"), for reports
   std::size_t where = 0;            // expected: command index in the stream; actual: NC line
 };
@@ -68,7 +71,8 @@ struct Tolerances {
 // grow with the job. Throws std::runtime_error when no temporary file can be made.
 class ExpectedMotion {
 public:
-  explicit ExpectedMotion(const prp::MachineParameters& machine);
+  // `profile`: how the controller's cycles move where controllers differ (tapping).
+  explicit ExpectedMotion(const prp::MachineParameters& machine, const machines::VerifyProfile& profile = {});
   ~ExpectedMotion();
   void add(const toolpath::Command& command);
   // Throws std::runtime_error naming the command when the stream has something verify cannot model,
@@ -90,10 +94,11 @@ std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program, co
                                         std::ostream& warnings,
                                         std::function<void(const toolpath::Command&)> observe = nullptr);
 
-// The toolpath side as a machine of VerifyProfile::planar_speeds makes it (verify_planar.cpp):
-// moves projected on X Y from the program origin, feeds turned into the speeds the post writes, tool
-// changes dropped, the spindle only on or off. `source` must outlive the result.
-std::unique_ptr<MotionSource> planar_expected(MotionSource& source, const machines::VerifyProfile& profile);
+// The toolpath side as the controller's programs can say it (verify_profile.cpp). Under
+// VerifyProfile::planar_speeds: moves projected on X Y from the program origin, feeds turned into the
+// speeds the post writes, tool changes dropped, the spindle only on or off; without tool_changes:
+// tool changes dropped. `source` must outlive the result.
+std::unique_ptr<MotionSource> as_programmed(MotionSource& source, const machines::VerifyProfile& profile);
 
 // Drops moves shorter than the tolerance, joins collinear moves, drops spindle events that change
 // nothing. `source` must outlive the result.
@@ -110,7 +115,9 @@ struct Result {
   std::optional<Divergence> divergence;
 };
 
-// Compares two normalised sources event by event; stops at the first divergence.
+// Compares two normalised sources event by event; stops at the first divergence. An optional
+// expected move is matched when the program makes it (alone, or as the end of a longer move in its
+// line), and passed over when it does not.
 Result compare(MotionSource& expected, MotionSource& actual, const Tolerances& tolerances);
 
 // One line for a report: "rapid to X1 Y2 Z3", "arc CCW XY to ... centre ... R5 sweep 90", ...

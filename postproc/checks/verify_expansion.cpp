@@ -50,9 +50,9 @@ struct Range {
 // read last, so a body is read straight through like the main program.
 class Expansion final : public MotionSource {
 public:
-  Expansion(const prp::MachineParameters& machine, prp::CommandSpool& main, prp::CommandSpool& bodies,
-            const std::map<std::int64_t, Range>& ranges, std::uint64_t max_commands)
-      : bodies_(bodies), ranges_(ranges), model_(machine, pending_), budget_(max_commands) {
+  Expansion(const prp::MachineParameters& machine, const machines::VerifyProfile& profile, prp::CommandSpool& main,
+            prp::CommandSpool& bodies, const std::map<std::int64_t, Range>& ranges, std::uint64_t max_commands)
+      : bodies_(bodies), ranges_(ranges), model_(machine, profile, pending_), budget_(max_commands) {
     frames_.push_back({&main, {0, main.end()}, 0, 1, {}});
   }
 
@@ -136,8 +136,9 @@ private:
 }  // namespace
 
 struct ExpectedMotion::Data {
-  explicit Data(const prp::MachineParameters& m) : machine(m) {}
+  Data(const prp::MachineParameters& m, const machines::VerifyProfile& p) : machine(m), profile(p) {}
   const prp::MachineParameters& machine;
+  machines::VerifyProfile profile;
   prp::CommandSpool main;    // the main program, in stream order
   prp::CommandSpool bodies;  // the bodies, each a contiguous range
   std::map<std::int64_t, Range> ranges;
@@ -145,7 +146,8 @@ struct ExpectedMotion::Data {
   Command kept;              // what is spooled of a command: name, index, parameters
 };
 
-ExpectedMotion::ExpectedMotion(const prp::MachineParameters& machine) : data_(std::make_unique<Data>(machine)) {}
+ExpectedMotion::ExpectedMotion(const prp::MachineParameters& machine, const machines::VerifyProfile& profile)
+    : data_(std::make_unique<Data>(machine, profile)) {}
 ExpectedMotion::~ExpectedMotion() = default;
 
 void ExpectedMotion::add(const Command& command) {
@@ -172,7 +174,8 @@ void ExpectedMotion::add(const Command& command) {
 }
 
 std::unique_ptr<MotionSource> ExpectedMotion::motion(std::uint64_t max_commands) {
-  return std::make_unique<Expansion>(data_->machine, data_->main, data_->bodies, data_->ranges, max_commands);
+  return std::make_unique<Expansion>(data_->machine, data_->profile, data_->main, data_->bodies, data_->ranges,
+                                     max_commands);
 }
 
 }  // namespace postproc::verify

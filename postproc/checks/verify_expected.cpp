@@ -11,6 +11,7 @@
 //   @drill ... @end_drill      the canned cycle, hole by hole (drilling, peck, tapping)
 //   @end_program               spindle stop, lift to the end height, then the end position in X Y
 //   @call_proc, @proc, @loop   expanded before the commands get here (verify_expansion.cpp)
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <stdexcept>
@@ -43,6 +44,12 @@ bool logical(const Command& c, std::string_view name) {
   return v->as_number() != 0;
 }
 
+bool contains_ci(std::string_view text, std::string_view part) {
+  return std::search(text.begin(), text.end(), part.begin(), part.end(), [](char a, char b) {
+           return toolpath::ascii_lower(a) == toolpath::ascii_lower(b);
+         }) != text.end();
+}
+
 // Commands without motion of their own (they only set variables, or write comments).
 bool silent(const Command& c) {
   for (std::string_view n : {"@start_of_file", "@def_tool", "@machine_plane", "@start_program", "@start_of_job",
@@ -55,7 +62,8 @@ bool silent(const Command& c) {
 // Turns commands into motion, keeping the tool's position (per axis: known or not).
 class Modeller {
 public:
-  Modeller(const prp::MachineParameters& machine, std::deque<Motion>& out) : machine_(machine), out_(out) {}
+  Modeller(const prp::MachineParameters& machine, const machines::VerifyProfile& profile, std::deque<Motion>& out)
+      : machine_(machine), profile_(profile), out_(out) {}
 
   void command(const Command& c) {
     if (is(c, "@start_of_file")) scale_ = logical(c, "inch_system") ? 25.4 : 1.0;
@@ -164,6 +172,7 @@ private:
     m.spindle = state;
     m.speed = state ? speed : 0.0;
     spindle_ = state;
+    if (state) speed_ = speed;
     emit(m);
   }
 
@@ -204,9 +213,11 @@ private:
     }
   }
 
+  // The end position is optional (Motion::optional): a post may home the machine instead.
   void end_program(const Command& c) {
     spindle(c, 0, 0.0);
     auto x = number(c, "xpos"), y = number(c, "ypos"), z = number(c, "zpos");
+    const std::size_t before = out_.size();
     if (z) {
       Eigen::Vector3d p = position_;
       p.z() = *z * scale_;
@@ -218,6 +229,7 @@ private:
       p.y() = *y * scale_;
       move(c, MotionKind::Rapid, p, 0.0, {true, true, false});
     }
+    for (std::size_t i = before; i < out_.size(); ++i) out_[i].optional = true;
   }
 
   // The cycle of a @drill, by the base type of its PRP record: the tool goes to the first hole at
@@ -227,9 +239,14 @@ private:
     const prp::Record* record = machine_.drill_cycle(name);
     cycle_ = record ? record->base : name;
     for (auto& ch : cycle_) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-    if (cycle_ != "DRILLING" && cycle_ != "PECK" && cycle_ != "TAPPING")
-      throw std::runtime_error(fmt::format("command #{} @drill: verify models drilling, peck and tapping cycles, "
-                                           "not `{}`", c.index, name));
+    static constexpr std::string_view kModelled[] = {"DRILLING", "F_DRILL", "PECK", "TAPPING", "BORING", "R_BORING", "F_BORING"};
+    if (std::find(std::begin(kModelled), std::end(kModelled), cycle_) == std::end(kModelled))
+      throw std::runtime_error(fmt::format("command #{} @drill: verify models the cycle bases DRILLING, F_DRILL, PECK, "
+                                           "TAPPING, BORING, R_BORING and F_BORING, not `{}`", c.index, name));
+    dwell_ = 0;
+    if (cycle_ == "F_DRILL" || cycle_ == "F_BORING")  // the record's delay parameter, as the post writes it
+      for (const auto& p : c.parameters)
+        if (contains_ci(p.name, "delay") || contains_ci(p.name, "dwell")) dwell_ = p.value.as_number();
     clearance_ = number_or(c, "drill_clearance_z", 0.0) * scale_;
     upper_ = number_or(c, "drill_upper_z", 0.0) * scale_;
     lower_ = number_or(c, "drill_lower_z", 0.0) * scale_;
@@ -251,9 +268,31 @@ private:
       move(c, kind, p, kind == MotionKind::Rapid ? 0.0 : cycle_feed_);
     };
     to_z(MotionKind::Rapid, upper_);
-    if (cycle_ == "TAPPING") {
+    auto dwell = [&] {
+      if (dwell_ <= 0) return;
+      Motion m = base(c, MotionKind::Dwell);
+      m.seconds = dwell_;
+      emit(m);
+    };
+    if (cycle_ == "TAPPING" || cycle_ == "BORING" || cycle_ == "F_BORING") {
       to_z(MotionKind::Feed, lower_);
-      to_z(MotionKind::Feed, travel);
+      dwell();
+      // Tapping: a control's G84 feeds out to R, then rapids; a tapping head's feeds out all the way.
+      if (cycle_ == "TAPPING" && !profile_.tap_feeds_out_to_r) {
+        to_z(MotionKind::Feed, travel);
+        return;
+      }
+      to_z(MotionKind::Feed, upper_);
+      to_z(MotionKind::Rapid, travel);
+      return;
+    }
+    if (cycle_ == "R_BORING") {  // out at rapid with the spindle stopped, then on again
+      to_z(MotionKind::Feed, lower_);
+      const int running = spindle_;
+      const double speed = speed_;
+      spindle(c, 0, speed);
+      to_z(MotionKind::Rapid, travel);
+      spindle(c, running, speed);
       return;
     }
     if (cycle_ == "PECK" && step_ > 0) {
@@ -266,20 +305,23 @@ private:
       }
     } else {
       to_z(MotionKind::Feed, lower_);
+      dwell();
       to_z(MotionKind::Rapid, upper_);
     }
     to_z(MotionKind::Rapid, travel);
   }
 
   const prp::MachineParameters& machine_;
+  machines::VerifyProfile profile_;
   std::deque<Motion>& out_;
   double scale_ = 1.0;
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
   std::array<bool, 3> known_{false, false, false};
   bool moved_ = false;  // a move was emitted (until then the position is the controllers' start, 0 0 0)
   int spindle_ = 0;
+  double speed_ = 0;
   std::string cycle_;
-  double clearance_ = 0, upper_ = 0, lower_ = 0, step_ = 0, cycle_feed_ = 0;
+  double clearance_ = 0, upper_ = 0, lower_ = 0, step_ = 0, cycle_feed_ = 0, dwell_ = 0;
 };
 
 }  // namespace
@@ -288,8 +330,9 @@ struct CommandModel::State {
   Modeller modeller;
 };
 
-CommandModel::CommandModel(const prp::MachineParameters& machine, std::deque<Motion>& out)
-    : state_(std::make_unique<State>(State{Modeller(machine, out)})) {}
+CommandModel::CommandModel(const prp::MachineParameters& machine, const machines::VerifyProfile& profile,
+                           std::deque<Motion>& out)
+    : state_(std::make_unique<State>(State{Modeller(machine, profile, out)})) {}
 CommandModel::~CommandModel() = default;
 void CommandModel::command(const Command& c) { state_->modeller.command(c); }
 

@@ -25,7 +25,7 @@ inline std::optional<double> number(const toolpath::Command& c, std::string_view
 // tool's position, the spindle state and the drill cycle between commands.
 class CommandModel {
 public:
-  CommandModel(const prp::MachineParameters& machine, std::deque<Motion>& out);
+  CommandModel(const prp::MachineParameters& machine, const machines::VerifyProfile& profile, std::deque<Motion>& out);
   ~CommandModel();
   CommandModel(const CommandModel&) = delete;
   CommandModel& operator=(const CommandModel&) = delete;

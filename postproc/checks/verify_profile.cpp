@@ -1,8 +1,9 @@
-// `postproc verify` for a controller whose programs move in X and Y only, every move a straight line
-// at a speed coefficient (VerifyProfile::planar_speeds: 2XAxisCNC): the toolpath side as such a
-// machine makes it. It is projected on X Y (Z-only moves vanish as zero-length moves), feeds become
-// the coefficients the post writes, tool changes (a comment in such a program) and spindle speeds are
-// not compared. The NC side is the model's own stream (verify.cpp).
+// The toolpath side of `postproc verify` as the controller's programs can say it (VerifyProfile).
+// A controller whose programs move in X and Y only, every move a straight line at a speed coefficient
+// (planar_speeds: 2XAxisCNC): the toolpath is projected on X Y (Z-only moves vanish as zero-length
+// moves), feeds become the coefficients the post writes, tool changes (a comment in such a program)
+// and spindle speeds are not compared. A controller without a tool changer (GRBL): tool changes are
+// the operator's, not compared. The NC side is the model's own stream (verify.cpp).
 #include <algorithm>
 #include <cmath>
 
@@ -56,10 +57,34 @@ private:
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
 };
 
+class WithoutToolChanges final : public MotionSource {
+public:
+  explicit WithoutToolChanges(MotionSource& source) : source_(source) {}
+  bool next(Motion& m) override {
+    while (source_.next(m))
+      if (m.kind != MotionKind::Tool) return true;
+    return false;
+  }
+
+private:
+  MotionSource& source_;
+};
+
+class AsIs final : public MotionSource {
+public:
+  explicit AsIs(MotionSource& source) : source_(source) {}
+  bool next(Motion& m) override { return source_.next(m); }
+
+private:
+  MotionSource& source_;
+};
+
 }  // namespace
 
-std::unique_ptr<MotionSource> planar_expected(MotionSource& source, const machines::VerifyProfile& profile) {
-  return std::make_unique<PlanarExpected>(source, profile);
+std::unique_ptr<MotionSource> as_programmed(MotionSource& source, const machines::VerifyProfile& profile) {
+  if (profile.planar_speeds) return std::make_unique<PlanarExpected>(source, profile);
+  if (!profile.tool_changes) return std::make_unique<WithoutToolChanges>(source);
+  return std::make_unique<AsIs>(source);
 }
 
 }  // namespace postproc::verify

@@ -54,7 +54,8 @@ JobReport verify_job(const Engine& engine, const std::string& job, const Toleran
                      std::string_view dialect, const machines::ReadOptions& read, std::ostream* warnings) {
   TemporaryFolder folder;
   std::filesystem::path main_file;
-  ExpectedMotion expected(engine.machine());
+  const machines::VerifyProfile profile = controller.verify_profile(read);
+  ExpectedMotion expected(engine.machine(), profile);
   {
     auto reader = toolpath::TraceReader::open(job);
     OutputFiles files(folder.path());
@@ -73,12 +74,11 @@ JobReport verify_job(const Engine& engine, const std::string& job, const Toleran
   }
   JobReport report;
   report.program = main_file;
-  std::unique_ptr<MotionSource> owned_expected;  // under a planar projection
   if (keep_program) {
     std::filesystem::copy_file(main_file, *keep_program, std::filesystem::copy_options::overwrite_existing);
     report.program = *keep_program;
   }
-  auto expected_raw = expected.motion();
+  auto expected_all = expected.motion();
   std::ostringstream discarded;  // the model's warnings, when the caller takes none
   // The cycle time of the program the model runs: split where the model changes the tool.
   prp::TimeEstimate estimate(prp::time_settings(engine.machine(prp::Units::Metric)));
@@ -88,16 +88,18 @@ JobReport verify_job(const Engine& engine, const std::string& job, const Toleran
   auto observe = [&](const toolpath::Command& c) {
     const bool change = toolpath::iequals(c.name, "@change_tool") || toolpath::iequals(c.name, "@turn_change_tool");
     if (change) {
-      time.tools.back().seconds = estimate.seconds() - tool_start;
-      tool_start = estimate.seconds();
       const toolpath::Value* t = c.find("tool_number");
-      time.tools.push_back({t ? static_cast<std::int64_t>(t->as_number()) : -1, 0});
+      const std::int64_t number = t ? static_cast<std::int64_t>(t->as_number()) : -1;
+      if (time.tools.size() == 1 || number != time.tools.back().number) {  // the same tool again: one entry
+        time.tools.back().seconds = estimate.seconds() - tool_start;
+        tool_start = estimate.seconds();
+        time.tools.push_back({number, 0});
+      }
     }
     estimate.add(c);
   };
   auto actual_raw = nc_motion(main_file, controller, dialect, read, warnings ? *warnings : discarded, observe);
-  if (const machines::VerifyProfile profile = controller.verify_profile(read); profile.planar_speeds)
-    expected_raw = planar_expected(*(owned_expected = std::move(expected_raw)), profile);
+  auto expected_raw = as_programmed(*expected_all, profile);
   auto expected_motion = normalised(*expected_raw, tolerances);
   auto actual_motion = normalised(*actual_raw, tolerances);
   report.result = compare(*expected_motion, *actual_motion, tolerances);

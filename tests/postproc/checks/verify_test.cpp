@@ -124,6 +124,43 @@ TEST(VerifyCompare, OneSideEndingEarlyIsADivergence) {
   EXPECT_EQ(r.divergence->what, "the NC program ends here; the toolpath goes on");
 }
 
+// The end position (@end_program) is optional: a post may home the machine instead (G28, G53).
+TEST(VerifyCompare, TheEndMoveMayBeMadeInPartOrInOneBlockOrLeftOut) {
+  auto optional = [](Motion m) {
+    m.optional = true;
+    return m;
+  };
+  const std::vector<Motion> toolpath = {move(MotionKind::Feed, {0, 0, 0}, {0, 0, -2}, 100),
+                                        move(MotionKind::Rapid, {0, 0, -2}, {0, 0, 10}),
+                                        optional(move(MotionKind::Rapid, {0, 0, 10}, {0, 0, 60})),
+                                        optional(move(MotionKind::Rapid, {0, 0, 60}, {30, 15, 60}))};
+  const Motion cut = move(MotionKind::Feed, {0, 0, 0}, {0, 0, -2}, 100);
+  struct Case {
+    const char* name;
+    std::vector<Motion> program;
+    const char* divergence;  // "" none
+  } cases[] = {
+      {"left out (G91 G28 Z0.)", {cut, move(MotionKind::Rapid, {0, 0, -2}, {0, 0, 10})}, ""},
+      {"made, block by block",
+       {cut, move(MotionKind::Rapid, {0, 0, -2}, {0, 0, 10}), move(MotionKind::Rapid, {0, 0, 10}, {0, 0, 60}),
+        move(MotionKind::Rapid, {0, 0, 60}, {30, 15, 60})},
+       ""},
+      {"retract and end height in one block",
+       {cut, move(MotionKind::Rapid, {0, 0, -2}, {0, 0, 60}), move(MotionKind::Rapid, {0, 0, 60}, {30, 15, 60})}, ""},
+      {"only the end height", {cut, move(MotionKind::Rapid, {0, 0, -2}, {0, 0, 10}), move(MotionKind::Rapid, {0, 0, 10}, {0, 0, 60})}, ""},
+      {"somewhere else",
+       {cut, move(MotionKind::Rapid, {0, 0, -2}, {0, 0, 10}), move(MotionKind::Rapid, {0, 0, 10}, {5, 5, 10})},
+       "the NC program goes on after the toolpath ends"},
+      {"no retract", {cut}, "the NC program ends here; the toolpath goes on"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    VectorSource expected(toolpath), actual(c.program);
+    auto r = postproc::verify::compare(expected, actual, {});
+    EXPECT_EQ(r.divergence ? r.divergence->what : "", c.divergence);
+  }
+}
+
 using Run = test_support::CliRun;
 const auto run = test_support::run_cli;
 
