@@ -31,7 +31,7 @@ void Command::set(ParamKey key, Value value) {
       return;
     }
   }
-  parameters.emplace_back(std::string(param_name(key)), std::move(value));
+  parameters.emplace_back(key, std::move(value));
 }
 
 void Command::clear() {

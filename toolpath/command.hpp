@@ -19,6 +19,8 @@ namespace toolpath {
 struct Parameter {
   Parameter() = default;
   Parameter(std::string name_, Value value_) : name(std::move(name_)), value(std::move(value_)), key(param_key(name)) {}
+  // A catalogue parameter, spelled as the catalogue does (no name lookup).
+  Parameter(ParamKey key_, Value value_) : name(param_name(key_)), value(std::move(value_)), key(key_) {}
 
   // Names the parameter `to` and updates the key, reusing the name's buffer.
   void rename(std::string_view to) {

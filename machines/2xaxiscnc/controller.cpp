@@ -3,6 +3,7 @@
 #include <array>
 
 #include "machines/2xaxiscnc/reader.hpp"
+#include "machines/2xaxiscnc/sample_program.hpp"
 #include "machines/registry/report_at_end.hpp"
 #include "toolpath/value.hpp"
 
@@ -51,6 +52,10 @@ public:
     p.machine_speed = Options{}.machine_speed;
     from_answers(read, p.machine_speed, p.rapid_coefficient);
     return p;
+  }
+  bool write_sample_program(std::ostream& out, std::size_t blocks) const override {
+    twoaxis::write_sample_program(out, blocks);
+    return true;
   }
 };
 

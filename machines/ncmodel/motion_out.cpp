@@ -11,6 +11,7 @@ namespace ncmodel {
 namespace geo = toolpath::geometry;
 using toolpath::Command;
 using toolpath::Value;
+using K = toolpath::ParamKey;
 
 namespace {
 
@@ -22,19 +23,34 @@ double clean(double v) {
 
 }  // namespace
 
-void MotionOut::number(Command& c, std::string_view name, double v) { c.set(name, Value::make_numeric(clean(v))); }
+void MotionOut::number(Command& c, toolpath::ParamKey key, double v) { c.set(key, Value::make_numeric(clean(v))); }
 
 Command& MotionOut::add(std::string_view name) {
-  queue_.emplace_back();
-  queue_.back().name = std::string(name);
-  queue_.back().index = made_++;  // numbered in stream order, from 0
-  return queue_.back();
+  if (spare_.empty()) {
+    queue_.emplace_back();
+  } else {
+    queue_.push_back(std::move(spare_.back()));
+    spare_.pop_back();
+    queue_.back().clear();
+  }
+  Command& c = queue_.back();
+  c.name.assign(name);
+  c.index = made_++;  // numbered in stream order, from 0
+  return c;
+}
+
+bool MotionOut::take(Command& out) {
+  if (queue_.empty()) return false;
+  std::swap(out, queue_.front());
+  if (spare_.size() < 64) spare_.push_back(std::move(queue_.front()));
+  queue_.pop_front();
+  return true;
 }
 
 void MotionOut::position_words(Command& c, const Eigen::Vector3d& p) {
-  number(c, "xpos", p.x());
-  number(c, "ypos", p.y());
-  number(c, "zpos", p.z());
+  number(c, K::xpos, p.x());
+  number(c, K::ypos, p.y());
+  number(c, K::zpos, p.z());
 }
 
 void MotionOut::rapid(const Eigen::Vector3d& to) {
@@ -45,7 +61,7 @@ void MotionOut::rapid(const Eigen::Vector3d& to) {
 void MotionOut::line(const Eigen::Vector3d& to, double feed) {
   Command& c = add("@line");
   position_words(c, to);
-  number(c, "feed", feed);
+  number(c, K::feed, feed);
   position_ = to;
 }
 
@@ -53,20 +69,20 @@ void MotionOut::arc(const Eigen::Vector3d& to, const Eigen::Vector3d& centre, ge
   const geo::Arc a = geo::make_arc(position_, to, centre, plane, ccw ? geo::Direction::CCW : geo::Direction::CW, 360.0);
   Command& c = add("@arc");
   position_words(c, to);
-  number(c, "feed", feed);
+  number(c, K::feed, feed);
   Eigen::Vector3d centre3 = centre;
   centre3[geo::axes(plane).normal] = position_[geo::axes(plane).normal];
-  number(c, "xcenter", centre3.x());
-  number(c, "ycenter", centre3.y());
-  number(c, "zcenter", centre3.z());
-  number(c, "radius", a.radius);
-  number(c, "arc_size", a.sweep);
-  c.set("arc_direction", Value::make_enum(ccw ? "CCW" : "CW"));
-  c.set("arc_plane", Value::make_enum(std::string(geo::plane_name(plane))));
+  number(c, K::xcenter, centre3.x());
+  number(c, K::ycenter, centre3.y());
+  number(c, K::zcenter, centre3.z());
+  number(c, K::radius, a.radius);
+  number(c, K::arc_size, a.sweep);
+  c.set(K::arc_direction, Value::make_enum(ccw ? "CCW" : "CW"));
+  c.set(K::arc_plane, Value::make_enum(std::string(geo::plane_name(plane))));
   position_ = to;
 }
 
-void MotionOut::dwell(double seconds) { number(add("@delay"), "delay_period", seconds); }
+void MotionOut::dwell(double seconds) { number(add("@delay"), K::delay_period, seconds); }
 
 void MotionOut::spindle(int m, double speed) {
   speed_ = speed;
@@ -74,32 +90,32 @@ void MotionOut::spindle(int m, double speed) {
     if (spindle_ != 5) add("@stop_tool");
   } else {
     Command& c = add("@start_tool");
-    number(c, "spin", speed);
-    c.set("spin_direction", Value::make_enum(m == 4 ? "CCW" : "CW"));
+    number(c, K::spin, speed);
+    c.set(K::spin_direction, Value::make_enum(m == 4 ? "CCW" : "CW"));
   }
   spindle_ = m;
 }
 
 void MotionOut::speed(double speed) {
   speed_ = speed;
-  if (spindle_ != 5) number(add("@m_feed_spin"), "spin", speed);
+  if (spindle_ != 5) number(add("@m_feed_spin"), K::spin, speed);
 }
 
 void MotionOut::tool_change(std::optional<double> number_, const std::optional<std::string>& name) {
   Command& c = add("@change_tool");
-  c.set("tool_number", Value::make_integer(number_ ? static_cast<std::int64_t>(*number_) : 0));
-  if (name) c.set("tool_name", Value::make_string(*name));
+  c.set(K::tool_number, Value::make_integer(number_ ? static_cast<std::int64_t>(*number_) : 0));
+  if (name) c.set(K::tool_name, Value::make_string(*name));
 }
 
-void MotionOut::message(std::string text) { add("@message").set("message", Value::make_string(std::move(text))); }
+void MotionOut::message(std::string text) { add("@message").set(K::message, Value::make_string(std::move(text))); }
 
 void MotionOut::compensation(std::string_view side) {
-  add("@compensation").set("side", Value::make_enum(std::string(side)));
+  add("@compensation").set(K::side, Value::make_enum(std::string(side)));
 }
 
 void MotionOut::machine_move(const std::array<std::optional<double>, 3>& axes) {
   Command& c = add("@machine_move");
-  static constexpr std::array<std::string_view, 3> kNames = {"xpos", "ypos", "zpos"};
+  static constexpr std::array<K, 3> kNames = {K::xpos, K::ypos, K::zpos};
   for (std::size_t i = 0; i < 3; ++i)
     if (axes[i]) number(c, kNames[i], *axes[i]);
 }

@@ -10,17 +10,22 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include "toolpath/command.hpp"
 #include "toolpath/geometry.hpp"
+#include "toolpath/param_key.hpp"
 
 namespace ncmodel {
 
 class MotionOut {
 public:
-  std::deque<toolpath::Command>& queue() { return queue_; }
+  bool empty() const { return queue_.empty(); }
+  // Moves the oldest command made into `out`; `out`'s old buffers are kept for a later command, so
+  // a long program allocates nothing per command. False when none waits.
+  bool take(toolpath::Command& out);
   const Eigen::Vector3d& position() const { return position_; }
 
   void rapid(const Eigen::Vector3d& to);
@@ -59,11 +64,12 @@ public:
   void hole(const Hole& h);
 
 private:
-  static void number(toolpath::Command& c, std::string_view name, double v);
+  static void number(toolpath::Command& c, toolpath::ParamKey key, double v);
   toolpath::Command& add(std::string_view name);
   void position_words(toolpath::Command& c, const Eigen::Vector3d& p);
 
   std::deque<toolpath::Command> queue_;
+  std::vector<toolpath::Command> spare_;  // taken commands' buffers, for the next ones
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
   int spindle_ = 5;
   double speed_ = 0;

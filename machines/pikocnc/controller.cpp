@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "machines/ncmodel/sample_program.hpp"
 #include "machines/pikocnc/dialect.hpp"
 #include "machines/pikocnc/reader.hpp"
 #include "machines/registry/report_at_end.hpp"
@@ -38,6 +39,12 @@ public:
     machines::VerifyProfile profile;
     profile.tap_feeds_out_to_r = false;  // G84 is for a self-reversing tapping head
     return profile;
+  }
+  bool write_sample_program(std::ostream& out, std::size_t blocks) const override {
+    out << "Benchmark job\n%\nG21 G90 G17\nM6 T1\nS12000 M3\nG0 X0 Y0 Z5\n";
+    ncmodel::write_milling_blocks(out, blocks, ncmodel::CommentStyle::Parentheses);
+    out << "M5\nM30\n";
+    return true;
   }
 };
 

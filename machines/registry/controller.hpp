@@ -70,6 +70,13 @@ public:
     (void)options;
     return {};
   }
+  // A long typical milling program of about `blocks` blocks in this controller's language, for the
+  // reading benchmark (bench/controller_bench.cpp); false: the controller has none.
+  virtual bool write_sample_program(std::ostream& out, std::size_t blocks) const {
+    (void)out;
+    (void)blocks;
+    return false;
+  }
 };
 
 }  // namespace machines

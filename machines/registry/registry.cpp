@@ -1,6 +1,7 @@
 #include "machines/registry/registry.hpp"
 
 #include "machines/2xaxiscnc/controller.hpp"
+#include "machines/iso/controller.hpp"
 #include "machines/pikocnc/controller.hpp"
 #include "machines/sinumerik/controller.hpp"
 #include "toolpath/value.hpp"
@@ -13,6 +14,10 @@ std::span<const Controller* const> controllers() {
       &pikocnc::controller(),
       &twoaxis::controller(),
       &sinumerik::controller(),
+      &iso::fanuc(),
+      &iso::linuxcnc(),
+      &iso::mach3(),
+      &iso::grbl(),
   };
   return all;
 }

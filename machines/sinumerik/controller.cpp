@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "machines/ncmodel/sample_program.hpp"
 #include "machines/registry/report_at_end.hpp"
 #include "machines/sinumerik/reader.hpp"
 
@@ -24,6 +25,12 @@ public:
     (void)dialect;
     (void)read;
     return std::make_unique<machines::ReportAtEnd<SinumerikReader>>(SinumerikReader::open(path), warnings);
+  }
+  bool write_sample_program(std::ostream& out, std::size_t blocks) const override {
+    out << "; BENCHMARK\nG71 G90 G17\nT1 M6\nS12000 M3\nG0 X0 Y0 Z5\n";
+    ncmodel::write_milling_blocks(out, blocks, ncmodel::CommentStyle::Semicolon);
+    out << "M5\nM30\n";
+    return true;
   }
 };
 

@@ -856,7 +856,7 @@ struct SinumerikReader::Impl {
   // Executes lines until commands are queued or the program ends.
   void run() {
     std::string_view raw;
-    while (out.queue().empty() && !finished && read_line(raw)) {
+    while (out.empty() && !finished && read_line(raw)) {
       if (++executed > options.max_executed_blocks) {
         diagnose(true, 1, fmt::format("more than {} blocks executed: a runaway loop?", options.max_executed_blocks));
         finished = true;
@@ -906,12 +906,8 @@ std::unique_ptr<SinumerikReader> SinumerikReader::from_string(std::string text, 
 }
 
 bool SinumerikReader::next(toolpath::Command& out) {
-  auto& queue = impl_->out.queue();
-  if (queue.empty()) impl_->run();
-  if (queue.empty()) return false;
-  out = std::move(queue.front());
-  queue.pop_front();
-  return true;
+  if (impl_->out.empty()) impl_->run();
+  return impl_->out.take(out);
 }
 
 std::size_t SinumerikReader::line() const { return impl_->main_line; }

@@ -14,6 +14,7 @@
 #include "gppl/builtins/display_format.hpp"
 #include "gppl/gppl.hpp"
 #include "machines/2xaxiscnc/reader.hpp"
+#include "machines/iso/reader.hpp"
 #include "machines/pikocnc/reader.hpp"
 #include "machines/sinumerik/reader.hpp"
 #include "machines/pikocnc/script/script.hpp"
@@ -236,6 +237,20 @@ void sinumerik(std::string_view data) {
     if (++commands > 5'000'000) broken("a Sinumerik program of bounded size gave more than five million commands");
 }
 
+void iso(std::string_view data) {
+  // The first byte picks the dialect (Fanuc, LinuxCNC, Mach3, GRBL); never throws on a bad block.
+  // Loops (WHILE, repeat, M98 L) are bounded by the executed-block limit, kept low here.
+  static constexpr std::string_view kDialects[] = {"fanuc", "linuxcnc", "mach3", "grbl"};
+  const iso::Rules& rules = *iso::rules_of(kDialects[data.empty() ? 0 : static_cast<unsigned char>(data[0]) % 4]);
+  iso::Options options;
+  options.max_executed_blocks = 5'000;
+  auto reader = iso::IsoReader::from_string(std::string(data), "fuzz.nc", rules, options);
+  toolpath::Command c;
+  long commands = 0;
+  while (reader->next(c))
+    if (++commands > 5'000'000) broken("an ISO program of bounded size gave more than five million commands");
+}
+
 void pikocnc_script(std::string_view data) {
   // A stream buffer that throws the G-code away: a script may write a lot within its step budget.
   struct Discard final : std::streambuf {
@@ -278,6 +293,7 @@ Entry entry(std::string_view target) {
       {"trace_reader", trace_reader}, {"gppl_check", gppl_check}, {"gppl_run", gppl_run},
       {"display_format", display_format}, {"prp_loader", prp_loader}, {"pikocnc", pikocnc},
       {"vmid", vmid}, {"twoaxis", twoaxis}, {"pikocnc_script", pikocnc_script}, {"sinumerik", sinumerik},
+      {"iso", iso},
   };
   for (const Named& n : kEntries)
     if (n.name == target) return n.entry;

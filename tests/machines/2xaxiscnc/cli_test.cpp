@@ -72,7 +72,7 @@ TEST(TwoAxisCli, VerifyComparesCoefficients) {
 }
 
 TEST(TwoAxisCli, VerifyRefusesUnknownDialects) {
-  const auto r = run({"verify", "--dialect", "fanuc", "--post", kPost, "--prp", kPrp, "../docs/examples/planes-helix.trace"});
+  const auto r = run({"verify", "--dialect", "heidenhain", "--post", kPost, "--prp", kPrp, "../docs/examples/planes-helix.trace"});
   EXPECT_EQ(r.code, 2);
 }
 

@@ -1,0 +1,826 @@
+#include "machines/iso/reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include <Eigen/Core>
+
+#include "machines/ncmodel/motion_out.hpp"
+#include "machines/pikocnc/geometry.hpp"
+#include "machines/pikocnc/line_reader.hpp"
+#include "toolpath/error.hpp"
+#include "toolpath/geometry.hpp"
+
+namespace iso {
+
+namespace {
+
+namespace geo = toolpath::geometry;
+
+constexpr Rules kRules[] = {
+    // Fanuc 0i/31i (M): M98/M99 subprograms, custom macro B loops, G4 P in milliseconds.
+    {"fanuc", "Fanuc", true, true, true, false, true, true, 0.1},
+    // LinuxCNC 2.8+: o-word subroutines and repeats, Fanuc-style M98/M99 too, P in seconds.
+    {"linuxcnc", "LinuxCNC", true, true, true, true, false, false, 0.254},
+    // Mach3/Mach4: M98/M99, P in seconds (the default setting).
+    {"mach3", "Mach3", true, true, true, false, false, false, 0.254},
+    // GRBL 1.1: no cycles, no tool changer, no subprograms.
+    {"grbl", "GRBL", false, false, false, false, false, false, 0.254},
+};
+
+struct BlockError {
+  std::size_t column;
+  std::string message;
+};
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// A word's value: a number, #n, or [expression] (macro B).
+struct Word {
+  char letter = 0;
+  double value = 0;
+  std::size_t column = 1;
+};
+
+}  // namespace
+
+const Rules* rules_of(std::string_view dialect) {
+  const std::string d = lower(dialect);
+  for (const Rules& r : kRules)
+    if (r.name == d) return &r;
+  return nullptr;
+}
+
+struct IsoReader::Impl {
+  const Rules& rules;
+  Options options;
+  std::string name;
+  std::unique_ptr<std::istream> stream;
+  std::unique_ptr<pikocnc::LineReader> lines;
+  std::map<long long, pikocnc::LineReader::Mark> programs;  // O<n> lines (Fanuc), start of the line
+  std::map<std::string, pikocnc::LineReader::Mark> subs;    // o<name> sub lines (LinuxCNC)
+  pikocnc::LineReader::Mark before;                         // where the line read last starts
+  std::size_t current_line = 0, command_line = 0;
+  toolpath::Diagnostics diagnostics;
+  std::set<std::string> warned;
+  std::size_t executed = 0;
+  bool finished = false, started = false, percent_seen = false;
+  ncmodel::MotionOut out;
+  std::vector<Word> words_;                    // of the block being executed
+  std::vector<const Word*> g_codes_, m_codes_;
+
+  struct Frame {  // a subprogram being run
+    pikocnc::LineReader::Mark body, back;
+    long long repeats_left = 0;
+    std::string o_name;  // LinuxCNC o-word sub: its endsub returns
+    std::map<long long, double> caller_locals;  // LinuxCNC: #1-#30 of the caller, back at endsub
+  };
+  std::vector<Frame> calls;
+  struct Repeat {  // o<n> repeat, WHILE .. DOm
+    std::string key;
+    pikocnc::LineReader::Mark body;
+    long long remaining = 0;
+  };
+  std::vector<Repeat> repeats;
+  std::map<long long, double> macro;  // #n
+
+  // modal state
+  int motion = 0;  // 0..3, or a cycle 73, 81..89
+  geo::Plane plane = geo::Plane::XY;
+  bool absolute = true, absolute_centres = false, inch = false;
+  bool return_to_r = false;  // G99
+  double feed = 0, speed = 0;
+  std::optional<double> selected_tool;
+  struct Cycle {
+    double z = 0, r = 0, q = 0, p = 0;
+    double initial = 0;
+  } cycle;
+  bool cycle_defined = false;
+
+  Impl(std::unique_ptr<std::istream> in, std::string n, const Rules& r, Options o)
+      : rules(r), options(o), name(std::move(n)), stream(std::move(in)), diagnostics(o.max_diagnostics) {
+    lines = std::make_unique<pikocnc::LineReader>(*stream, name);
+    index_labels();
+  }
+
+  // One pass over the program for its O numbers and o-word subs, then back to the start.
+  void index_labels() {
+    const pikocnc::LineReader::Mark start = lines->mark();
+    std::string_view text;
+    for (;;) {
+      const pikocnc::LineReader::Mark at = lines->mark();
+      if (!lines->next(text)) break;
+      std::size_t i = text.find_first_not_of(" \t");
+      if (i == std::string_view::npos) continue;
+      if (text[i] == 'N' || text[i] == 'n') {  // a block number before it
+        ++i;
+        while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+        while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+      }
+      if (i >= text.size() || (text[i] != 'O' && text[i] != 'o')) continue;
+      std::size_t j = i + 1;
+      while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) ++j;
+      if (j == i + 1) continue;
+      const long long number = std::atoll(std::string(text.substr(i + 1, j - i - 1)).c_str());
+      std::string rest = lower(text.substr(j));
+      rest.erase(0, rest.find_first_not_of(" \t"));
+      if (rest.rfind("sub", 0) == 0) subs.emplace(fmt::format("o{}", number), at);
+      else if (!programs.count(number)) programs.emplace(number, at);
+    }
+    lines->seek(start);
+  }
+
+  void diagnose(bool error, std::size_t column, std::string message) {
+    diagnostics.add({{name, current_line, column}, error ? toolpath::Severity::Error : toolpath::Severity::Warning,
+                     std::move(message)});
+  }
+  void warn_once(const std::string& key, std::size_t column, std::string message) {
+    if (warned.insert(key).second) diagnose(false, column, std::move(message));
+  }
+  double unit() const { return inch ? 25.4 : 1.0; }
+
+  // ---------------------------------------------------------------- expressions (macro B)
+  struct Cursor {
+    std::string_view text;
+    std::size_t i = 0;
+    void skip() {
+      while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    }
+    char peek() {
+      skip();
+      return i < text.size() ? text[i] : '\0';
+    }
+    std::size_t column() const { return i + 1; }
+  };
+
+  // A count, number or code as an integer; beyond a billion (or not a number) it is an error, never a
+  // conversion the language leaves undefined.
+  static long long whole(double v, std::size_t column, std::string_view what) {
+    if (!(std::abs(v) <= 1e9)) throw BlockError{column, fmt::format("{} out of range", what)};
+    return static_cast<long long>(v);
+  }
+
+  double number_literal(Cursor& c) {
+    c.skip();
+    const std::size_t b = c.i;
+    if (c.i < c.text.size() && (c.text[c.i] == '+' || c.text[c.i] == '-')) ++c.i;
+    bool digits = false;
+    while (c.i < c.text.size() && (std::isdigit(static_cast<unsigned char>(c.text[c.i])) || c.text[c.i] == '.')) {
+      digits |= c.text[c.i] != '.';
+      ++c.i;
+    }
+    if (!digits) throw BlockError{b + 1, "expected a number"};
+    const char* first = c.text.data() + b;
+    const char* last = c.text.data() + c.i;
+    if (*first == '+') ++first;  // from_chars takes no '+'
+    double v = 0;
+    const auto [end, error] = std::from_chars(first, last, v);
+    if (error == std::errc::result_out_of_range || (error == std::errc{} && !std::isfinite(v)))
+      throw BlockError{b + 1, "number out of range"};
+    if (error != std::errc{} || end != last)
+      throw BlockError{b + 1, fmt::format("malformed number `{}`", c.text.substr(b, c.i - b))};
+    return v;
+  }
+
+  double value(Cursor& c) {
+    const char ch = c.peek();
+    if (ch == '[') {
+      ++c.i;
+      const double v = expression(c);
+      if (!std::isfinite(v)) throw BlockError{c.column(), "the expression has no finite value"};
+      if (c.peek() != ']') throw BlockError{c.column(), "expected `]`"};
+      ++c.i;
+      return v;
+    }
+    if (ch == '#') {
+      if (!rules.macro_b && !rules.o_words) throw BlockError{c.column(), fmt::format("{} has no # variables", rules.title)};
+      ++c.i;
+      const std::size_t col = c.column();
+      const double n = value(c);
+      if (n < 0 || n > 99999) throw BlockError{col, fmt::format("#{} is no variable", n)};
+      auto it = macro.find(whole(n, col, "variable number"));
+      return it == macro.end() ? 0.0 : it->second;
+    }
+    if (std::isalpha(static_cast<unsigned char>(ch))) return function(c);
+    if (ch == '-') {
+      ++c.i;
+      return -value(c);
+    }
+    return number_literal(c);
+  }
+
+  std::string keyword(Cursor& c) {
+    c.skip();
+    const std::size_t b = c.i;
+    while (c.i < c.text.size() && std::isalpha(static_cast<unsigned char>(c.text[c.i]))) ++c.i;
+    return lower(c.text.substr(b, c.i - b));
+  }
+
+  // SIN COS TAN (degrees), ATAN[a]/[b], SQRT ABS ROUND FIX FUP of a [ ] argument. FIX and FUP: Fanuc
+  // drops or adds the fraction (toward or away from zero); LinuxCNC rounds down or up.
+  double function(Cursor& c) {
+    const std::size_t column = c.column();
+    const std::string name = keyword(c);
+    if (c.peek() != '[') throw BlockError{column, fmt::format("expected a number, found `{}`", name)};
+    const double a = value(c);
+    constexpr double kDegree = 3.14159265358979323846 / 180;
+    const bool fanuc = rules.macro_b;
+    if (name == "sin") return std::sin(a * kDegree);
+    if (name == "cos") return std::cos(a * kDegree);
+    if (name == "tan") return std::tan(a * kDegree);
+    if (name == "atan") {
+      if (c.peek() != '/') return std::atan(a) / kDegree;
+      ++c.i;
+      return std::atan2(a, value(c)) / kDegree;
+    }
+    if (name == "sqrt") {
+      if (a < 0) throw BlockError{column, "SQRT of a negative number"};
+      return std::sqrt(a);
+    }
+    if (name == "abs") return std::abs(a);
+    if (name == "round") return std::round(a);
+    if (name == "fix") return fanuc ? std::trunc(a) : std::floor(a);
+    if (name == "fup") return fanuc ? (a < 0 ? std::floor(a) : std::ceil(a)) : std::ceil(a);
+    throw BlockError{column, fmt::format("`{}` is no function the model knows", name)};
+  }
+
+  double product(Cursor& c) {
+    double v = value(c);
+    for (;;) {
+      if (c.peek() == '*') {
+        ++c.i;
+        v *= value(c);
+      } else if (c.peek() == '/') {
+        ++c.i;
+        const double d = value(c);
+        if (d == 0) throw BlockError{c.column(), "division by zero"};
+        v /= d;
+      } else {
+        return v;
+      }
+    }
+  }
+
+  double sum(Cursor& c) {
+    double v = product(c);
+    for (;;) {
+      if (c.peek() == '+') {
+        ++c.i;
+        v += product(c);
+      } else if (c.peek() == '-') {
+        ++c.i;
+        v -= product(c);
+      } else {
+        return v;
+      }
+    }
+  }
+
+  // Comparisons (EQ NE LT LE GT GE) joined by AND / OR, inside [ ].
+  double expression(Cursor& c) {
+    double v = sum(c);
+    for (;;) {
+      const std::size_t save = c.i;
+      const std::string op = keyword(c);
+      if (op == "eq") v = v == sum(c);
+      else if (op == "ne") v = v != sum(c);
+      else if (op == "lt") v = v < sum(c);
+      else if (op == "le") v = v <= sum(c);
+      else if (op == "gt") v = v > sum(c);
+      else if (op == "ge") v = v >= sum(c);
+      else if (op == "and") v = (v != 0 && sum(c) != 0);
+      else if (op == "or") v = (v != 0 || sum(c) != 0);
+      else {
+        c.i = save;
+        return v;
+      }
+    }
+  }
+
+  // ---------------------------------------------------------------- reading
+  bool read_line(std::string_view& text) {
+    before = lines->mark();
+    if (!lines->next(text)) return false;
+    current_line = lines->line_number();
+    return true;
+  }
+
+  // Removes ( ) comments and what follows `;`.
+  static std::string strip(std::string_view line, bool& unclosed) {
+    std::string out;
+    unclosed = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (line[i] == ';') break;
+      if (line[i] == '(') {
+        const std::size_t close = line.find(')', i);
+        if (close == std::string_view::npos) {
+          unclosed = true;
+          break;
+        }
+        out += ' ';
+        i = close;
+        continue;
+      }
+      out += line[i];
+    }
+    return out;
+  }
+
+  void run() {
+    std::string_view raw;
+    while (out.empty() && !finished && read_line(raw)) {
+      if (++executed > options.max_executed_blocks) {
+        diagnose(true, 1, fmt::format("more than {} blocks executed: a runaway loop?", options.max_executed_blocks));
+        finished = true;
+        return;
+      }
+      command_line = current_line;
+      try {
+        block(raw);
+      } catch (const BlockError& e) {
+        diagnose(true, e.column, e.message);
+      }
+    }
+    if (finished || !out.empty()) return;
+    // The end of the file without M2/M30 (or the closing %): the program ends there.
+    if (!calls.empty()) diagnose(true, 1, "the file ends inside a subprogram (no M99 or endsub)");
+    else if (!repeats.empty()) {
+      const std::string& key = repeats.back().key;  // do<m> (WHILE) or o<n> (repeat)
+      diagnose(true, 1, fmt::format("the file ends inside a loop (no {})",
+                                    key.rfind("do", 0) == 0 ? "END" + key.substr(2) : key + " endrepeat"));
+    }
+    else diagnose(false, 1, "the program ends without M2, M30 or %");
+    finish();
+  }
+
+  void block(std::string_view raw) {
+    bool unclosed = false;
+    std::string text = strip(raw, unclosed);
+    if (unclosed) throw BlockError{raw.find('(') + 1, "a comment without its `)`"};
+    const std::size_t first = text.find_first_not_of(" \t\r");
+    if (first == std::string::npos) return;
+    if (text[first] == '%') {
+      if (!rules.subprograms) {  // GRBL: its senders drop the line; GRBL itself answers error 1
+        warn_once("%", first + 1, fmt::format("{} itself takes no `%` (a sender drops the line): ignored", rules.title));
+        return;
+      }
+      if (percent_seen) {  // the end of the program
+        finish();
+        return;
+      }
+      percent_seen = true;
+      return;
+    }
+    Cursor c{text, first};
+    if (c.peek() == '/') ++c.i;  // block delete: executed (the switch is off)
+    // A block number
+    if (c.peek() == 'N' || c.peek() == 'n') {
+      const std::size_t save = c.i++;
+      if (std::isdigit(static_cast<unsigned char>(c.peek()))) number_literal(c);
+      else c.i = save;
+    }
+    // O words: a program number (Fanuc), or LinuxCNC's o-word control
+    if (c.peek() == 'O' || c.peek() == 'o') {
+      const std::size_t col = c.column();
+      ++c.i;
+      if (!std::isdigit(static_cast<unsigned char>(c.peek())))
+        throw BlockError{col, "o<name> words are not modelled: use numbered o-words"};
+      const long long number = whole(number_literal(c), col, "o-word number");
+      const std::string word = keyword(c);
+      if (word.empty()) {
+        if (!rules.subprograms) throw BlockError{col, fmt::format("{} takes no O program numbers", rules.title)};
+        return;  // a program's number: reached in sequence, it is only a label
+      }
+      if (!rules.o_words) throw BlockError{col, fmt::format("{} has no o-word control (`o{} {}`)", rules.title, number, word)};
+      return o_word(fmt::format("o{}", number), word, c, col);
+    }
+    if (rules.macro_b) {
+      const std::size_t save = c.i;
+      const std::string word = keyword(c);
+      if (word == "while") return macro_while(c);
+      if (word.size() == 3 && word == "end") return macro_end(c);
+      c.i = save;
+    }
+    if ((rules.macro_b || rules.o_words) && c.peek() == '#') return macro_assign(c);
+    std::vector<Word>& words = words_;  // reused: no allocation per block
+    words.clear();
+    while (c.peek() != '\0') {
+      const std::size_t col = c.column();
+      const char ch = c.peek();
+      if (!std::isalpha(static_cast<unsigned char>(ch))) throw BlockError{col, fmt::format("unexpected `{}`", ch)};
+      ++c.i;
+      words.push_back({static_cast<char>(std::toupper(static_cast<unsigned char>(ch))), value(c), col});
+    }
+    execute(words);
+  }
+
+  // ---------------------------------------------------------------- macro B and o-words
+  void macro_assign(Cursor& c) {
+    ++c.i;  // #
+    const std::size_t col = c.column();
+    const double n = value(c);
+    if (c.peek() != '=') throw BlockError{c.column(), "expected `=`"};
+    ++c.i;
+    if (n < 1 || n > 99999) throw BlockError{col, fmt::format("#{} cannot be assigned", n)};
+    const double v = expression(c);
+    if (!std::isfinite(v)) throw BlockError{col, "the expression has no finite value"};
+    macro[whole(n, col, "variable number")] = v;
+  }
+
+  // WHILE [cond] DOm: the body runs while the condition holds; ENDm goes back to the WHILE.
+  void macro_while(Cursor& c) {
+    const double condition = value(c);
+    if (keyword(c) != "do") throw BlockError{c.column(), "expected DO after WHILE [...]"};
+    const std::string key = fmt::format("do{}", whole(number_literal(c), c.column(), "DO number"));
+    if (!repeats.empty() && repeats.back().key == key) repeats.pop_back();  // the loop's own WHILE again
+    if (condition != 0) {
+      repeats.push_back({key, before, 0});
+      return;
+    }
+    const std::string end = "end" + key.substr(2);
+    skip_to([&](std::string_view line) { return opening(line) == end; }, "END" + key.substr(2));
+  }
+
+  void macro_end(Cursor& c) {
+    const std::string key = fmt::format("do{}", whole(number_literal(c), c.column(), "DO number"));
+    if (repeats.empty() || repeats.back().key != key) throw BlockError{1, fmt::format("END{} without its WHILE", key.substr(2))};
+    lines->seek(repeats.back().body);  // the WHILE tests again
+  }
+
+  // How a block opens, lower case, the block number left out: "end1" (END1), "o101 endrepeat"
+  // (o101 endrepeat [..]), "" for anything else. What skip_to looks for.
+  std::string opening(std::string_view line) {
+    Cursor c{line, 0};
+    if (c.peek() == '/') ++c.i;
+    if (c.peek() == 'N' || c.peek() == 'n') {
+      ++c.i;
+      while (c.i < c.text.size() && std::isdigit(static_cast<unsigned char>(c.text[c.i]))) ++c.i;
+    }
+    const std::string word = keyword(c);
+    const std::size_t b = c.i;
+    while (c.i < c.text.size() && std::isdigit(static_cast<unsigned char>(c.text[c.i]))) ++c.i;
+    const std::string digits(c.text.substr(b, c.i - b));
+    if (word == "end" && !digits.empty()) return word + digits;
+    if (word == "o" && !digits.empty()) {
+      const std::string what = keyword(c);
+      return what.empty() ? "" : "o" + digits + " " + what;
+    }
+    return "";
+  }
+
+  template <class Match>
+  void skip_to(Match match, const std::string& what) {
+    std::string_view text;
+    for (;;) {
+      if (!read_line(text)) throw BlockError{1, fmt::format("{} not found", what)};
+      bool unclosed = false;
+      if (match(strip(text, unclosed))) return;
+    }
+  }
+
+  void o_word(const std::string& label, const std::string& word, Cursor& c, std::size_t col) {
+    auto line_is = [&](const std::string& want) {
+      return [this, key = label + " " + want](std::string_view line) { return opening(line) == key; };
+    };
+    if (word == "sub") {  // a definition, met in sequence: skipped
+      skip_to(line_is("endsub"), label + " endsub");
+      return;
+    }
+    if (word == "endsub" || word == "return") {
+      if (calls.empty() || calls.back().o_name != label) throw BlockError{col, fmt::format("{} {} outside its sub", label, word)};
+      return return_from_call();
+    }
+    if (word == "call") {
+      auto it = subs.find(label);
+      if (it == subs.end()) throw BlockError{col, fmt::format("no {} sub in the program", label)};
+      // LinuxCNC: the [arguments] become #1, #2, ... of the sub; #1-#30 are its own (docs/iso.md)
+      std::vector<double> arguments;
+      while (c.peek() == '[') {
+        if (arguments.size() == 30) throw BlockError{c.column(), "more than 30 arguments"};
+        arguments.push_back(value(c));
+      }
+      if (c.peek() != '\0') throw BlockError{c.column(), fmt::format("unexpected `{}` after the arguments", c.peek())};
+      call(it->second, 1, label, col);
+      for (long long n = 1; n <= 30; ++n)
+        if (auto v = macro.find(n); v != macro.end()) calls.back().caller_locals.emplace(n, v->second);
+      for (long long n = 1; n <= 30; ++n) macro.erase(n);
+      for (std::size_t n = 0; n < arguments.size(); ++n) macro[static_cast<long long>(n) + 1] = arguments[n];
+      return;
+    }
+    if (word == "repeat") {
+      const double count = c.peek() == '[' ? value(c) : 1;
+      if (count >= 1) {
+        repeats.push_back({label, lines->mark(), whole(count, col, "repeat count") - 1});
+        return;
+      }
+      skip_to(line_is("endrepeat"), label + " endrepeat");
+      return;
+    }
+    if (word == "endrepeat") {
+      if (repeats.empty() || repeats.back().key != label) throw BlockError{col, fmt::format("{} endrepeat without its repeat", label)};
+      if (repeats.back().remaining-- > 0) lines->seek(repeats.back().body);
+      else repeats.pop_back();
+      return;
+    }
+    throw BlockError{col, fmt::format("`{} {}` is not modelled", label, word)};
+  }
+
+  // Runs a body (the line after `at`), `times` times, then comes back after the calling line.
+  void call(const pikocnc::LineReader::Mark& at, long long times, const std::string& o_name, std::size_t col) {
+    if (calls.size() >= options.max_call_depth)
+      throw BlockError{col, fmt::format("subprograms nested deeper than {} (a recursion?)", options.max_call_depth)};
+    const pikocnc::LineReader::Mark back = lines->mark();
+    lines->seek(at);
+    std::string_view header;
+    lines->next(header);  // the O / sub line itself
+    calls.push_back({lines->mark(), back, times - 1, o_name, {}});
+  }
+
+  void return_from_call() {
+    Frame& f = calls.back();
+    if (f.repeats_left-- > 0) {
+      lines->seek(f.body);
+      return;
+    }
+    lines->seek(f.back);
+    if (!f.o_name.empty()) {  // the caller's #1-#30 again
+      for (long long n = 1; n <= 30; ++n) macro.erase(n);
+      macro.insert(f.caller_locals.begin(), f.caller_locals.end());
+    }
+    calls.pop_back();
+  }
+
+  void finish() {
+    out.end_program();
+    finished = true;
+  }
+
+  // ---------------------------------------------------------------- one block of words
+  static const Word* find(const std::vector<Word>& w, char letter) {
+    for (const Word& x : w)
+      if (x.letter == letter) return &x;
+    return nullptr;
+  }
+
+  void execute(const std::vector<Word>& w) {
+    std::vector<const Word*>& g_codes = g_codes_;
+    std::vector<const Word*>& m_codes = m_codes_;
+    g_codes.clear();
+    m_codes.clear();
+    for (const Word& x : w) {
+      if (x.letter == 'G') g_codes.push_back(&x);
+      if (x.letter == 'M') m_codes.push_back(&x);
+    }
+    if (const Word* f = find(w, 'F')) feed = f->value * unit();
+    if (const Word* t = find(w, 'T')) selected_tool = t->value;
+    bool dwell = false, machine = false, motion_given = false;
+    std::optional<int> new_cycle;
+    for (const Word* g : g_codes) {
+      const long long code = whole(std::round(g->value * 10), g->column, "G code");
+      switch (code) {
+        case 0: case 10: case 20: case 30:
+          motion = static_cast<int>(code / 10);
+          motion_given = true;
+          break;
+        case 40: dwell = true; break;
+        case 170: plane = geo::Plane::XY; break;
+        case 180: plane = geo::Plane::ZX; break;
+        case 190: plane = geo::Plane::YZ; break;
+        case 200: inch = true; break;
+        case 210: inch = false; break;
+        case 280: case 300: case 530: machine = true; break;
+        case 400: out.compensation("COMP_OFF"); break;
+        case 410: out.compensation("COMP_LEFT"); break;
+        case 420: out.compensation("COMP_RIGHT"); break;
+        case 800: motion = 0; cycle_defined = false; break;
+        case 900: absolute = true; break;
+        case 910: absolute = false; break;
+        case 901: absolute_centres = true; break;
+        case 911: absolute_centres = false; break;
+        case 980: return_to_r = false; break;
+        case 990: return_to_r = true; break;
+        case 730: case 810: case 820: case 830: case 840: case 850: case 860: case 890:
+          if (!rules.canned_cycles)
+            throw BlockError{g->column, fmt::format("{} has no canned cycles (G{:g})", rules.title, g->value)};
+          new_cycle = static_cast<int>(code / 10);
+          break;
+        // modes whose values the program does not give, and path modes: nothing to move
+        case 430: case 431: case 490: case 540: case 550: case 560: case 570: case 580: case 590: case 610:
+        case 640: case 930: case 940: case 960: case 970: case 150: case 160:
+          break;
+        case 950:  // feed per revolution: passed on as written, the model has no spindle speed for it
+          warn_once("G95", g->column, "G95 (feed per revolution) is not modelled: F is taken as mm/min");
+          break;
+        default:
+          warn_once(fmt::format("G{}", g->value), g->column, fmt::format("G{:g} is not modelled: ignored", g->value));
+      }
+    }
+    // Tool and spindle (in this order: M6 then M3 in one block loads the tool first)
+    for (const Word* m : m_codes) {
+      const long long code = whole(m->value, m->column, "M code");
+      if (code == 6) {
+        if (!rules.tool_change) throw BlockError{m->column, fmt::format("{} has no tool changer (M6: error 20, unsupported command)", rules.title)};
+        out.tool_change(selected_tool, std::nullopt);
+      }
+    }
+    if (const Word* s = find(w, 'S')) speed = s->value;
+    bool spindle_given = false;
+    for (const Word* m : m_codes) {
+      const long long code = whole(m->value, m->column, "M code");
+      if (code == 3 || code == 4 || code == 5) {
+        out.spindle(code, speed);
+        spindle_given = true;
+      }
+    }
+    if (find(w, 'S') && !spindle_given) out.speed(speed);
+    if (dwell) {
+      double seconds = 0;
+      if (const Word* p = find(w, 'P')) seconds = rules.dwell_p_in_ms ? p->value / 1000 : p->value;
+      else if (const Word* x = find(w, 'X')) seconds = x->value;
+      else throw BlockError{1, "G4 needs its time (P or X)"};
+      out.dwell(seconds);
+    } else if (machine) {
+      std::array<std::optional<double>, 3> axes;
+      for (std::size_t a = 0; a < 3; ++a)
+        if (const Word* x = find(w, "XYZ"[a])) axes[a] = x->value * unit();
+      out.machine_move(axes);
+    } else if (new_cycle) {
+      define_cycle(*new_cycle, w);
+    } else {
+      const bool axes = find(w, 'X') || find(w, 'Y') || find(w, 'Z');
+      if (motion >= 73 && cycle_defined && (find(w, 'X') || find(w, 'Y'))) {
+        position_hole(w);
+      } else if (axes || (motion_given && (find(w, 'I') || find(w, 'J') || find(w, 'K') || find(w, 'R')))) {
+        move(w);
+      }
+    }
+    flow(w, m_codes);
+  }
+
+  Eigen::Vector3d target(const std::vector<Word>& w) const {
+    Eigen::Vector3d to = out.position();
+    for (int a = 0; a < 3; ++a)
+      if (const Word* x = find(w, "XYZ"[a])) to[a] = absolute ? x->value * unit() : to[a] + x->value * unit();
+    return to;
+  }
+
+  void move(const std::vector<Word>& w) {
+    if (motion >= 73) motion = 1;  // not reached: a cycle's blocks are holes
+    const Eigen::Vector3d to = target(w);
+    if (motion == 0) return out.rapid(to);
+    if (feed <= 0) diagnose(false, 1, "a feed move before any feed (F) was given");
+    if (motion == 1) return out.line(to, feed);
+    const bool ccw = motion == 3;
+    Eigen::Vector3d centre = out.position();
+    if (const Word* r = find(w, 'R')) {
+      const Eigen::Vector3d& from = out.position();
+      if ((pikocnc::in_plane(from, plane) - pikocnc::in_plane(to, plane)).norm() < 1e-9)
+        throw BlockError{r->column, "an R arc cannot be a full circle: give I J K"};
+      const auto c2 = pikocnc::centre_from_radius(pikocnc::in_plane(from, plane), pikocnc::in_plane(to, plane),
+                                                  r->value * unit(), ccw, options.arc_tolerance);
+      if (!c2) throw BlockError{r->column, fmt::format("R{:g} cannot join the start and the end point", r->value)};
+      const geo::PlaneAxes ax = geo::axes(plane);
+      centre[ax.first] = c2->x();
+      centre[ax.second] = c2->y();
+    } else {
+      bool any = false;
+      for (int a = 0; a < 3; ++a)
+        if (const Word* k = find(w, "IJK"[a])) {
+          any = true;
+          centre[a] = absolute_centres ? k->value * unit() : centre[a] + k->value * unit();
+        }
+      if (!any) throw BlockError{1, fmt::format("G{} needs its centre (I J K) or R", ccw ? 3 : 2)};
+      // The control's alarm when the end is not on the circle (LinuxCNC: "radius to end of arc
+      // differs from radius to start"): beyond the tolerance and 0.1 % of the radius.
+      const double r0 = (pikocnc::in_plane(out.position(), plane) - pikocnc::in_plane(centre, plane)).norm();
+      const double r1 = (pikocnc::in_plane(to, plane) - pikocnc::in_plane(centre, plane)).norm();
+      if (std::abs(r1 - r0) > std::max(options.arc_tolerance, 0.001 * r0))
+        throw BlockError{1, fmt::format("the end point is {:.4f} mm from the centre, the start {:.4f} mm: not one circle",
+                                        r1, r0)};
+    }
+    out.arc(to, centre, plane, ccw, feed);
+  }
+
+  // A cycle block: its words, then the first hole where the tool is (or at the block's X Y).
+  void define_cycle(int code, const std::vector<Word>& w) {
+    if (!absolute) throw BlockError{1, "canned cycles in G91 are not modelled"};
+    if (motion < 73 || !cycle_defined) cycle.initial = out.position().z();
+    motion = code;
+    cycle_defined = true;
+    if (const Word* z = find(w, 'Z')) cycle.z = z->value * unit();
+    if (const Word* r = find(w, 'R')) cycle.r = r->value * unit();
+    if (const Word* q = find(w, 'Q')) cycle.q = std::abs(q->value) * unit();
+    if (const Word* p = find(w, 'P')) cycle.p = rules.dwell_p_in_ms ? p->value / 1000 : p->value;
+    position_hole(w);
+  }
+
+  void position_hole(const std::vector<Word>& w) {
+    Eigen::Vector3d at = out.position();
+    for (int a = 0; a < 2; ++a)
+      if (const Word* x = find(w, "XY"[a])) at[a] = absolute ? x->value * unit() : at[a] + x->value * unit();
+    if ((at - out.position()).norm() > 1e-12) out.rapid(at);
+    using Kind = ncmodel::MotionOut::Hole::Kind;
+    ncmodel::MotionOut::Hole h;
+    h.approach = cycle.r;
+    h.depth = cycle.z;
+    h.retract = return_to_r ? cycle.r : cycle.initial;
+    h.feed = feed;
+    switch (motion) {
+      case 81: h.kind = Kind::Drill; break;
+      case 82: h.kind = Kind::Drill; h.dwell = cycle.p; break;
+      case 83:
+      case 73:
+        h.kind = motion == 83 ? Kind::Peck : Kind::ChipBreak;
+        h.first_step = cycle.q > 0 ? cycle.q : h.approach - h.depth;
+        h.chip_lift = rules.chip_break_lift;
+        break;
+      case 84: h.kind = Kind::Tap; break;
+      case 85: h.kind = Kind::Bore; break;
+      case 86: h.kind = Kind::BoreSpindleStop; break;
+      case 89: h.kind = Kind::Bore; h.dwell = cycle.p; break;
+      default: throw BlockError{1, fmt::format("G{} is not modelled", motion)};
+    }
+    try {
+      out.hole(h);
+    } catch (const std::runtime_error& e) {
+      throw BlockError{1, e.what()};
+    }
+  }
+
+  // M98, M99, M2, M30.
+  void flow(const std::vector<Word>& w, const std::vector<const Word*>& m_codes) {
+    for (const Word* m : m_codes) {
+      const long long code = whole(m->value, m->column, "M code");
+      if (code == 98) {
+        if (!rules.subprograms) throw BlockError{m->column, fmt::format("{} has no subprograms (M98)", rules.title)};
+        const Word* p = find(w, 'P');
+        if (!p) throw BlockError{m->column, "M98 needs P, the program number"};
+        long long program = whole(p->value, p->column, "program number"), times = 1;
+        if (const Word* l = find(w, 'L')) times = whole(l->value, l->column, "repeat count");
+        else if (program > 9999) {  // P<times><4-digit program>
+          times = program / 10000;
+          program %= 10000;
+        }
+        auto it = programs.find(program);
+        if (it == programs.end()) throw BlockError{p->column, fmt::format("no O{} in the program", program)};
+        if (times < 1) return;  // L0: not run
+        call(it->second, times, {}, m->column);
+        return;
+      }
+      if (code == 99) {
+        if (calls.empty() || !calls.back().o_name.empty()) {
+          warn_once("M99", m->column, "M99 in the main program restarts it on the control: the model stops here");
+          finish();
+          return;
+        }
+        return_from_call();
+        return;
+      }
+      if (code == 2 || code == 30) {
+        finish();
+        return;
+      }
+    }
+  }
+};
+
+IsoReader::IsoReader(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+IsoReader::~IsoReader() = default;
+
+std::unique_ptr<IsoReader> IsoReader::open(const std::string& path, const Rules& rules, Options options) {
+  auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
+  if (!*file) throw toolpath::InputError({path, 0, 0}, "cannot open the program");
+  return std::unique_ptr<IsoReader>(new IsoReader(std::make_unique<Impl>(std::move(file), path, rules, options)));
+}
+
+std::unique_ptr<IsoReader> IsoReader::from_string(std::string text, std::string name, const Rules& rules,
+                                                  Options options) {
+  return std::unique_ptr<IsoReader>(new IsoReader(
+      std::make_unique<Impl>(std::make_unique<std::istringstream>(std::move(text)), std::move(name), rules, options)));
+}
+
+bool IsoReader::next(toolpath::Command& out) {
+  if (impl_->out.empty()) impl_->run();
+  return impl_->out.take(out);
+}
+
+std::size_t IsoReader::line() const { return impl_->command_line; }
+const std::string& IsoReader::file_name() const { return impl_->name; }
+const toolpath::Diagnostics& IsoReader::diagnostics() const { return impl_->diagnostics; }
+
+}  // namespace iso

@@ -1,0 +1,9 @@
+%
+O1
+G0 X0 Y0 (unclosed
+G5 X1.
+G2 X100. Y0 R1. F100
+M98 P9
+M98 P1
+M30
+%
