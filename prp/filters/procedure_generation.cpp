@@ -82,6 +82,9 @@ bool ProcedureGeneration::collect() {
   bodies_.emplace();
   toolpath::Command c;
   bool in_job = false, leading = false, in_cycle = false;
+  // The tool in the spindle: a job without tool changes of its own works with it. SolidCAM sends a
+  // job's tool change before its @start_of_job (docs/parity.md, "Command order").
+  std::optional<toolpath::Value> current_tool;
   Job job;
   Cycle cycle;
   K kind;
@@ -100,6 +103,7 @@ bool ProcedureGeneration::collect() {
     if (!in_job) {
       if (c.is_stream_command() && kind == K::start_of_job) {
         job = Job{};
+        job.tool_number = current_tool;
         job.index = c.index;
         job.offset = bodies_->write(c);
         job.first_cycle = cycles_.size();
@@ -109,6 +113,8 @@ bool ProcedureGeneration::collect() {
         main_->write(marker);
         in_job = leading = true;
       } else {
+        if (c.is_stream_command() && has(kToolChange, kind))
+          if (const toolpath::Value* t = c.find("tool_number")) current_tool = *t;
         main_->write(c);
       }
       continue;
@@ -120,11 +126,13 @@ bool ProcedureGeneration::collect() {
     if (kind == K::turning || (kind == K::other && (toolpath::iequals(c.name, "@turn_proc") ||
                                                     toolpath::iequals(c.name, "@thread"))))
       if (auto l = number(c, "label"); l && *l > 0) geometry_labels_.insert(static_cast<std::int64_t>(*l));
-    if (leading && has(kToolChange, kind)) {
+    if (leading && has(kToolChange, kind)) {  // the other order: the job's tool changes open it
+      if (const toolpath::Value* t = c.find("tool_number"); t && job.tools == 0) job.tool_number = current_tool = *t;
       ++job.tools;
-      if (const toolpath::Value* t = c.find("tool_number"); t && !job.tool_number) job.tool_number = *t;
       continue;
     }
+    if (has(kToolChange, kind))
+      if (const toolpath::Value* t = c.find("tool_number")) current_tool = *t;
     leading = false;
     if (kind == K::drill) {
       cycle = Cycle{};

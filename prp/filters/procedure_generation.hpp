@@ -40,7 +40,7 @@ private:
     int tools = 0;            // tool-change commands right after @start_of_job (they stay in main)
     std::size_t first_cycle = 0, cycles = 0;
     std::optional<std::int64_t> label;  // when it becomes a procedure
-    std::optional<toolpath::Value> tool_number;  // of its first tool change
+    std::optional<toolpath::Value> tool_number;  // its first tool change's, else the one in the spindle
   };
   struct Cycle {
     std::uint64_t hash = 0;

@@ -83,24 +83,23 @@ const Case kCases[] = {
      {"@start_of_file #0 first_proc_number=7 last_proc_number=9 first_user_proc=10", "@def_tool #1 tool_number=1",
       "@start_program #2", "@change_tool #4 tool_number=1", "@call_proc #3 label=7 message=P1 job_name=P1 tool_number=1",
       "@change_tool #9 tool_number=2", "@call_proc #8 label=8 message=D1 job_name=D1 tool_number=2",
-      "@call_proc #15 label=9 message=D2 job_name=D2", "@end_program #21",
+      "@call_proc #15 label=9 message=D2 job_name=D2 tool_number=2", "@end_program #21",
       // bodies after the main program, in label order
       "@proc #3 label=7", "@start_of_job #3 job_name=P1 tool_number=1", "@rapid_move #5 xpos=1", "@line #6 xpos=2",
       "@end_of_job #7", "@end_proc #7 label=7 end_of_job=T", "@proc #8 label=8", "@start_of_job #8 job_name=D1 tool_number=2",
       "@drill #10 drill_type=Peck", "@drill_point #11 xpos=10", "@drill_point #12 xpos=20", "@end_drill #13",
-      "@end_of_job #14", "@end_proc #14 label=8 end_of_job=T", "@proc #15 label=9", "@start_of_job #15 job_name=D2",
-      "@drill #16 drill_type=Tapping", "@drill_point #17 xpos=10", "@drill_point #18 xpos=20", "@end_drill #19",
+      "@end_of_job #14", "@end_proc #14 label=8 end_of_job=T", "@proc #15 label=9", "@start_of_job #15 job_name=D2 tool_number=2", "@drill #16 drill_type=Tapping", "@drill_point #17 xpos=10", "@drill_point #18 xpos=20", "@end_drill #19",
       "@end_of_job #20", "@end_proc #20 label=9 end_of_job=T", "@end_of_file #22"}},
     {"SharedDrillPoints",
      "gen_procs = Y\ndrill_proc = Y\n",
      {"@start_of_file #0 first_proc_number=7 last_proc_number=10 first_user_proc=11", "@def_tool #1 tool_number=1",
       "@start_program #2", "@change_tool #4 tool_number=1", "@call_proc #3 label=7 message=P1 job_name=P1 tool_number=1",
       "@change_tool #9 tool_number=2", "@call_proc #8 label=8 message=D1 job_name=D1 tool_number=2",
-      "@call_proc #15 label=9 message=D2 job_name=D2", "@end_program #21", "@proc #3 label=7",
+      "@call_proc #15 label=9 message=D2 job_name=D2 tool_number=2", "@end_program #21", "@proc #3 label=7",
       "@start_of_job #3 job_name=P1 tool_number=1", "@rapid_move #5 xpos=1", "@line #6 xpos=2", "@end_of_job #7",
       "@end_proc #7 label=7 end_of_job=T", "@proc #8 label=8", "@start_of_job #8 job_name=D1 tool_number=2",
       "@drill #10 drill_type=Peck", "@call_proc #10 label=10", "@end_of_job #14", "@end_proc #14 label=8 end_of_job=T",
-      "@proc #15 label=9", "@start_of_job #15 job_name=D2", "@drill #16 drill_type=Tapping", "@call_proc #16 label=10",
+      "@proc #15 label=9", "@start_of_job #15 job_name=D2 tool_number=2", "@drill #16 drill_type=Tapping", "@call_proc #16 label=10",
       "@end_of_job #20", "@end_proc #20 label=9 end_of_job=T",
       // the shared point list, once, with the cycle's end
       "@proc #10 label=10", "@drill_point #11 xpos=10", "@drill_point #12 xpos=20", "@end_drill #13",
@@ -124,6 +123,28 @@ TEST_P(Generation, ExactStream) { EXPECT_EQ(run(GetParam().settings, flat_job())
 
 INSTANTIATE_TEST_SUITE_P(Cases, Generation, ::testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// SolidCAM sends a job's tool change before its @start_of_job (docs/parity.md, "Command order"):
+// the tool change stays in the main program before the call, and each body names its job's tool,
+// a job without a tool change of its own the one in the spindle.
+TEST(Generation, ToolChangeBeforeTheJobAsSolidCamSendsIt) {
+  auto in = flat_job();
+  std::swap(in[3], in[4]);  // P1: @change_tool, @start_of_job
+  std::swap(in[8], in[9]);  // D1
+  std::vector<std::string> calls, starts;
+  for (const std::string& line : run("gen_procs = Y\n", in)) {
+    if (line.rfind("@call_proc", 0) == 0 || line.rfind("@change_tool", 0) == 0) calls.push_back(line);
+    if (line.rfind("@start_of_job", 0) == 0) starts.push_back(line);
+  }
+  EXPECT_EQ(calls, (std::vector<std::string>{"@change_tool #4 tool_number=1",
+                                             "@call_proc #3 label=7 message=P1 job_name=P1 tool_number=1",
+                                             "@change_tool #9 tool_number=2",
+                                             "@call_proc #8 label=8 message=D1 job_name=D1 tool_number=2",
+                                             "@call_proc #15 label=9 message=D2 job_name=D2 tool_number=2"}));
+  EXPECT_EQ(starts, (std::vector<std::string>{"@start_of_job #3 job_name=P1 tool_number=1",
+                                              "@start_of_job #8 job_name=D1 tool_number=2",
+                                              "@start_of_job #15 job_name=D2 tool_number=2"}));
+}
 
 TEST(Generation, DifferentPointsAreNotShared) {
   auto in = flat_job();
