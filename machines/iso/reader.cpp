@@ -34,7 +34,7 @@ constexpr Rules kRules[] = {
     // LinuxCNC 2.8+: o-word subroutines and repeats, Fanuc-style M98/M99 too, P in seconds.
     {"linuxcnc", "LinuxCNC", true, true, true, true, false, false, 0.254},
     // Mach3/Mach4: M98/M99, P in seconds (the default setting).
-    {"mach3", "Mach3", true, true, true, false, false, false, 0.254},
+    {"mach3", "Mach3", true, true, true, false, false, false, 0.254, Scaling::PerAxis},
     // GRBL 1.1: no cycles, no tool changer, no subprograms.
     {"grbl", "GRBL", false, false, false, false, false, false, 0.254},
 };
@@ -98,6 +98,7 @@ struct IsoReader::Impl {
   };
   std::vector<Repeat> repeats;
   std::map<long long, double> macro;  // #n
+  std::map<std::string, double> named;  // LinuxCNC #<name>
 
   // modal state
   int motion = 0;  // 0..3, or a cycle 73, 81..89
@@ -132,14 +133,15 @@ struct IsoReader::Impl {
         while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
         while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
       }
-      if (i >= text.size() || (text[i] != 'O' && text[i] != 'o')) continue;
+      // O<n>, or :<n> (the ISO tape code's program number, Mach3's subprogram label)
+      if (i >= text.size() || (text[i] != 'O' && text[i] != 'o' && text[i] != ':')) continue;
       std::size_t j = i + 1;
       while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) ++j;
-      if (j == i + 1) continue;
-      const long long number = std::atoll(std::string(text.substr(i + 1, j - i - 1)).c_str());
+      if (j == i + 1 || j - i > 10) continue;
+      const long long number = std::strtoll(std::string(text.substr(i + 1, j - i - 1)).c_str(), nullptr, 10);
       std::string rest = lower(text.substr(j));
       rest.erase(0, rest.find_first_not_of(" \t"));
-      if (rest.rfind("sub", 0) == 0) subs.emplace(fmt::format("o{}", number), at);
+      if (text[i] != ':' && rest.rfind("sub", 0) == 0) subs.emplace(fmt::format("o{}", number), at);
       else if (!programs.count(number)) programs.emplace(number, at);
     }
     lines->seek(start);
@@ -153,6 +155,14 @@ struct IsoReader::Impl {
     if (warned.insert(key).second) diagnose(false, column, std::move(message));
   }
   double unit() const { return inch ? 25.4 : 1.0; }
+
+  // Program coordinates to the work frame the toolpath is in: a scale per axis (Mach3's G51), then
+  // the G92 and G52 shifts.
+  Eigen::Vector3d g92 = Eigen::Vector3d::Zero(), g52 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+  double to_work(int axis, double programmed) const { return programmed * unit() * scale[axis] + g92[axis] + g52[axis]; }
+  double step(int axis, double programmed) const { return programmed * unit() * scale[axis]; }  // G91, I J K
+  bool uniform_in(geo::Plane p) const { return scale[geo::axes(p).first] == scale[geo::axes(p).second]; }
 
   // ---------------------------------------------------------------- expressions (macro B)
   struct Cursor {
@@ -211,6 +221,12 @@ struct IsoReader::Impl {
       if (!rules.macro_b && !rules.o_words) throw BlockError{c.column(), fmt::format("{} has no # variables", rules.title)};
       ++c.i;
       const std::size_t col = c.column();
+      if (c.peek() == '<') {  // LinuxCNC's named parameter #<name>
+        const std::string key = named_parameter(c);
+        auto it = named.find(key);
+        if (it == named.end()) throw BlockError{col, fmt::format("#<{}> has no value yet", key)};
+        return it->second;
+      }
       const double n = value(c);
       if (n < 0 || n > 99999) throw BlockError{col, fmt::format("#{} is no variable", n)};
       auto it = macro.find(whole(n, col, "variable number"));
@@ -394,6 +410,14 @@ struct IsoReader::Impl {
       if (std::isdigit(static_cast<unsigned char>(c.peek()))) number_literal(c);
       else c.i = save;
     }
+    // :<n>, the ISO tape code's O: a program number (Mach3 labels its subprograms so)
+    if (c.peek() == ':') {
+      const std::size_t col = c.column();
+      ++c.i;
+      whole(number_literal(c), col, "program number");
+      if (!rules.subprograms) throw BlockError{col, fmt::format("{} takes no program numbers", rules.title)};
+      return;
+    }
     // O words: a program number (Fanuc), or LinuxCNC's o-word control
     if (c.peek() == 'O' || c.peek() == 'o') {
       const std::size_t col = c.column();
@@ -430,8 +454,31 @@ struct IsoReader::Impl {
   }
 
   // ---------------------------------------------------------------- macro B and o-words
+  // #<name>: the name between < and >, lower case without blanks (LinuxCNC compares them so).
+  std::string named_parameter(Cursor& c) {
+    const std::size_t col = c.column();
+    if (!rules.o_words) throw BlockError{col, fmt::format("{} has no named parameters", rules.title)};
+    const std::size_t close = c.text.find('>', c.i);
+    if (close == std::string_view::npos) throw BlockError{col, "a named parameter without its `>`"};
+    std::string key;
+    for (char ch : c.text.substr(c.i + 1, close - c.i - 1))
+      if (ch != ' ' && ch != '\t') key += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (key.empty()) throw BlockError{col, "a named parameter without a name"};
+    c.i = close + 1;
+    return key;
+  }
+
   void macro_assign(Cursor& c) {
     ++c.i;  // #
+    if (c.peek() == '<') {
+      const std::string key = named_parameter(c);
+      if (c.peek() != '=') throw BlockError{c.column(), "expected `=`"};
+      ++c.i;
+      const double v = expression(c);
+      if (!std::isfinite(v)) throw BlockError{c.column(), "the expression has no finite value"};
+      named[key] = v;
+      return;
+    }
     const std::size_t col = c.column();
     const double n = value(c);
     if (c.peek() != '=') throw BlockError{c.column(), "expected `=`"};
@@ -507,7 +554,13 @@ struct IsoReader::Impl {
     }
     if (word == "call") {
       auto it = subs.find(label);
-      if (it == subs.end()) throw BlockError{col, fmt::format("no {} sub in the program", label)};
+      if (it == subs.end()) {  // LinuxCNC then looks in its subroutine folders: a machine's own routine
+        warn_once(label + " call", col,
+                  fmt::format("{} call: no {} sub in this file (a routine of the machine's subroutine folders?): "
+                              "not run, its motion is not in the model",
+                              label, label));
+        return;
+      }
       // LinuxCNC: the [arguments] become #1, #2, ... of the sub; #1-#30 are its own (docs/iso.md)
       std::vector<double> arguments;
       while (c.peek() == '[') {
@@ -589,6 +642,7 @@ struct IsoReader::Impl {
     if (const Word* f = find(w, 'F')) feed = f->value * unit();
     if (const Word* t = find(w, 'T')) selected_tool = t->value;
     bool dwell = false, machine = false, motion_given = false;
+    enum class Shift { None, G92, G52, Scale } shift = Shift::None;
     std::optional<int> new_cycle;
     for (const Word* g : g_codes) {
       const long long code = whole(std::round(g->value * 10), g->column, "G code");
@@ -604,6 +658,11 @@ struct IsoReader::Impl {
         case 200: inch = true; break;
         case 210: inch = false; break;
         case 280: case 300: case 530: machine = true; break;
+        case 920: shift = Shift::G92; break;
+        case 921: case 922: g92.setZero(); break;  // G92.1 resets the G92 shift, G92.2 suspends it
+        case 520: shift = Shift::G52; break;
+        case 500: scale.setOnes(); break;        // cancel scaling
+        case 510: shift = Shift::Scale; break;
         case 400: out.compensation("COMP_OFF"); break;
         case 410: out.compensation("COMP_LEFT"); break;
         case 420: out.compensation("COMP_RIGHT"); break;
@@ -614,7 +673,7 @@ struct IsoReader::Impl {
         case 911: absolute_centres = false; break;
         case 980: return_to_r = false; break;
         case 990: return_to_r = true; break;
-        case 730: case 810: case 820: case 830: case 840: case 850: case 860: case 890:
+        case 730: case 740: case 760: case 810: case 820: case 830: case 840: case 850: case 860: case 890:
           if (!rules.canned_cycles)
             throw BlockError{g->column, fmt::format("{} has no canned cycles (G{:g})", rules.title, g->value)};
           new_cycle = static_cast<int>(code / 10);
@@ -627,6 +686,9 @@ struct IsoReader::Impl {
           warn_once("G95", g->column, "G95 (feed per revolution) is not modelled: F is taken as mm/min");
           break;
         default:
+          // Its words may not be positions (G10 L2 P1 X..): a block that has any is not guessed at.
+          if (find(w, 'X') || find(w, 'Y') || find(w, 'Z'))
+            throw BlockError{g->column, fmt::format("G{:g} is not modelled, and its block has axis words", g->value)};
           warn_once(fmt::format("G{}", g->value), g->column, fmt::format("G{:g} is not modelled: ignored", g->value));
       }
     }
@@ -654,6 +716,20 @@ struct IsoReader::Impl {
       else if (const Word* x = find(w, 'X')) seconds = x->value;
       else throw BlockError{1, "G4 needs its time (P or X)"};
       out.dwell(seconds);
+    } else if (shift == Shift::G92) {  // the position, as the program will name it from now on
+      for (int a = 0; a < 3; ++a)
+        if (const Word* x = find(w, "XYZ"[a])) g92[a] = out.position()[a] - x->value * unit() * scale[a] - g52[a];
+    } else if (shift == Shift::G52) {  // a local shift of the work frame; G52 X0 Y0 Z0 cancels it
+      for (int a = 0; a < 3; ++a)
+        if (const Word* x = find(w, "XYZ"[a])) g52[a] = x->value * unit();
+    } else if (shift == Shift::Scale) {
+      if (rules.scaling != Scaling::PerAxis)
+        throw BlockError{1, fmt::format("{}'s G51 scaling is not modelled", rules.title)};
+      for (int a = 0; a < 3; ++a)  // Mach3: the factors per axis, about the program zero
+        if (const Word* x = find(w, "XYZ"[a])) {
+          if (!(x->value > 0) && !(x->value < 0)) throw BlockError{x->column, "a scale factor of 0"};
+          scale[a] = x->value;
+        }
     } else if (machine) {
       std::array<std::optional<double>, 3> axes;
       for (std::size_t a = 0; a < 3; ++a)
@@ -675,7 +751,7 @@ struct IsoReader::Impl {
   Eigen::Vector3d target(const std::vector<Word>& w) const {
     Eigen::Vector3d to = out.position();
     for (int a = 0; a < 3; ++a)
-      if (const Word* x = find(w, "XYZ"[a])) to[a] = absolute ? x->value * unit() : to[a] + x->value * unit();
+      if (const Word* x = find(w, "XYZ"[a])) to[a] = absolute ? to_work(a, x->value) : to[a] + step(a, x->value);
     return to;
   }
 
@@ -686,13 +762,14 @@ struct IsoReader::Impl {
     if (feed <= 0) diagnose(false, 1, "a feed move before any feed (F) was given");
     if (motion == 1) return out.line(to, feed);
     const bool ccw = motion == 3;
+    if (!uniform_in(plane)) throw BlockError{1, "an arc under a scale that differs in its plane is an ellipse: not modelled"};
     Eigen::Vector3d centre = out.position();
     if (const Word* r = find(w, 'R')) {
       const Eigen::Vector3d& from = out.position();
       if ((pikocnc::in_plane(from, plane) - pikocnc::in_plane(to, plane)).norm() < 1e-9)
         throw BlockError{r->column, "an R arc cannot be a full circle: give I J K"};
       const auto c2 = pikocnc::centre_from_radius(pikocnc::in_plane(from, plane), pikocnc::in_plane(to, plane),
-                                                  r->value * unit(), ccw, options.arc_tolerance);
+                                                  step(geo::axes(plane).first, r->value), ccw, options.arc_tolerance);
       if (!c2) throw BlockError{r->column, fmt::format("R{:g} cannot join the start and the end point", r->value)};
       const geo::PlaneAxes ax = geo::axes(plane);
       centre[ax.first] = c2->x();
@@ -702,7 +779,7 @@ struct IsoReader::Impl {
       for (int a = 0; a < 3; ++a)
         if (const Word* k = find(w, "IJK"[a])) {
           any = true;
-          centre[a] = absolute_centres ? k->value * unit() : centre[a] + k->value * unit();
+          centre[a] = absolute_centres ? to_work(static_cast<int>(a), k->value) : centre[a] + step(static_cast<int>(a), k->value);
         }
       if (!any) throw BlockError{1, fmt::format("G{} needs its centre (I J K) or R", ccw ? 3 : 2)};
       // The control's alarm when the end is not on the circle (LinuxCNC: "radius to end of arc
@@ -722,9 +799,9 @@ struct IsoReader::Impl {
     if (motion < 73 || !cycle_defined) cycle.initial = out.position().z();
     motion = code;
     cycle_defined = true;
-    if (const Word* z = find(w, 'Z')) cycle.z = z->value * unit();
-    if (const Word* r = find(w, 'R')) cycle.r = r->value * unit();
-    if (const Word* q = find(w, 'Q')) cycle.q = std::abs(q->value) * unit();
+    if (const Word* z = find(w, 'Z')) cycle.z = to_work(2, z->value);
+    if (const Word* r = find(w, 'R')) cycle.r = to_work(2, r->value);
+    if (const Word* q = find(w, 'Q')) cycle.q = std::abs(step(2, q->value));
     if (const Word* p = find(w, 'P')) cycle.p = rules.dwell_p_in_ms ? p->value / 1000 : p->value;
     position_hole(w);
   }
@@ -732,7 +809,7 @@ struct IsoReader::Impl {
   void position_hole(const std::vector<Word>& w) {
     Eigen::Vector3d at = out.position();
     for (int a = 0; a < 2; ++a)
-      if (const Word* x = find(w, "XY"[a])) at[a] = absolute ? x->value * unit() : at[a] + x->value * unit();
+      if (const Word* x = find(w, "XY"[a])) at[a] = absolute ? to_work(a, x->value) : at[a] + step(a, x->value);
     if ((at - out.position()).norm() > 1e-12) out.rapid(at);
     using Kind = ncmodel::MotionOut::Hole::Kind;
     ncmodel::MotionOut::Hole h;
@@ -749,7 +826,8 @@ struct IsoReader::Impl {
         h.first_step = cycle.q > 0 ? cycle.q : h.approach - h.depth;
         h.chip_lift = rules.chip_break_lift;
         break;
-      case 84: h.kind = Kind::Tap; break;
+      case 84: case 74: h.kind = Kind::Tap; break;  // G74: left-handed (the reversal is the control's)
+      case 76: h.kind = Kind::BoreSpindleStop; break;  // fine boring: the shift off the wall is not modelled
       case 85: h.kind = Kind::Bore; break;
       case 86: h.kind = Kind::BoreSpindleStop; break;
       case 89: h.kind = Kind::Bore; h.dwell = cycle.p; break;

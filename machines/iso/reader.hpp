@@ -17,6 +17,8 @@
 
 namespace iso {
 
+enum class Scaling { None, PerAxis };  // G51: none, or Mach3's factors per axis
+
 // What a dialect's control does differently (docs/iso.md, "Dialects").
 struct Rules {
   std::string_view name;   // as --dialect takes it
@@ -28,6 +30,7 @@ struct Rules {
   bool macro_b = false;        // Fanuc custom macro B: #n variables, WHILE [..] DOm / ENDm
   bool dwell_p_in_ms = false;  // Fanuc: G4 P in milliseconds (X in seconds); the others: P in seconds
   double chip_break_lift = 0.254;  // G73's retract after each peck, mm
+  Scaling scaling = Scaling::None;
 };
 // nullptr for an unknown name: fanuc, linuxcnc, mach3, grbl.
 const Rules* rules_of(std::string_view dialect);

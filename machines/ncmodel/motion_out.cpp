@@ -102,6 +102,10 @@ void MotionOut::speed(double speed) {
 }
 
 void MotionOut::tool_change(std::optional<double> number_, const std::optional<std::string>& name) {
+  if (spindle_ != 5) {  // a tool change stops the spindle on every control (M6 runs M5 first)
+    add("@stop_tool");
+    spindle_ = 5;
+  }
   Command& c = add("@change_tool");
   c.set(K::tool_number, Value::make_integer(number_ ? static_cast<std::int64_t>(*number_) : 0));
   if (name) c.set(K::tool_name, Value::make_string(*name));

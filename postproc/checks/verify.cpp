@@ -105,6 +105,9 @@ private:
   }
 
   bool moved(Motion& m, const Eigen::Vector3d& to) {
+    // The model starts at X0 Y0 Z0: a first move to there is no move (the toolpath side drops the
+    // same one), whatever the program's first words (`G0 Z0`, `G0 X0. Y0.`).
+    if (!started_ && m.kind != MotionKind::Arc && (to - position_).norm() <= 1e-9) return false;
     m.from = position_;
     m.from_known = started_;
     m.to = to;
@@ -166,7 +169,7 @@ private:
 
   // Two straight moves of one kind and feed, the second going on in the first one's direction.
   static bool joins(const Motion& a, const Motion& b) {
-    if (a.optional != b.optional) return false;  // compare() joins them when the program did
+    if (a.optional != b.optional || a.approach) return false;  // compare() joins them when the program did
     if (!straight(a) || a.kind != b.kind || std::abs(a.feed - b.feed) > 1e-9) return false;
     if (!a.from_known || !b.from_known || !all_known(a) || !all_known(b)) return false;
     const Eigen::Vector3d u = a.to - a.from, v = b.to - b.from;
@@ -309,16 +312,34 @@ Result compare(MotionSource& expected, MotionSource& actual, const Tolerances& t
       result.divergence = Divergence{ordinal, "the NC program ends here; the toolpath goes on", a, std::nullopt};
       return result;
     }
+    if (!has_a && b.kind == MotionKind::Dwell) {  // see below: an added dwell
+      has_b = actual.next(b);
+      continue;
+    }
     if (!has_a) {
       result.divergence = Divergence{ordinal, "the NC program goes on after the toolpath ends", std::nullopt, b};
       return result;
     }
+    // A retract straight up before a tool change (to the tool-change height) is the program's to make.
+    if (b.kind == MotionKind::Rapid && (a.kind == MotionKind::Tool || (a.kind == MotionKind::Spindle && a.spindle == 0)) &&
+        std::abs(b.to.x() - b.from.x()) <= tolerances.position && std::abs(b.to.y() - b.from.y()) <= tolerances.position &&
+        b.to.z() > b.from.z()) {
+      has_b = actual.next(b);
+      continue;
+    }
+    // A dwell the program adds (to let the spindle reach its speed, `M3 G4 P1`) moves nothing: passed over.
+    if (b.kind == MotionKind::Dwell && a.kind != MotionKind::Dwell) {
+      has_b = actual.next(b);
+      continue;
+    }
     std::string what = difference(a, b, tolerances);
-    // The program may go on to the optional end move in one block (a retract and the end height).
-    if (!what.empty() && !a.optional && straight(a)) {
+    // The program may make two moves in one block: a retract and the optional end height, or a tool
+    // change's approach in X Y and the move down.
+    if ((!what.empty() || a.approach) && (!a.optional || a.approach) && straight(a)) {  // an approach: the join first
       Motion ahead;
       if (!next_a && expected.next(ahead)) next_a = std::move(ahead);
-      if (next_a && next_a->optional && next_a->kind == a.kind && std::abs(next_a->feed - a.feed) <= 1e-9) {
+      if (next_a && (next_a->optional || a.approach) && next_a->kind == a.kind &&
+          std::abs(next_a->feed - a.feed) <= 1e-9) {
         Motion joined = a;
         joined.to = next_a->to;
         joined.known = next_a->known;

@@ -49,6 +49,9 @@ struct Motion {
   // Expected only: a move the program may leave out. @end_program's move to the end position: many
   // posts send the machine home instead (G28, G53), which the models do not place in the work frame.
   bool optional = false;
+  // Expected only: a tool change's approach in X Y, which a program may make together with the move
+  // down to the approach height that follows it, in one block (`G0 X20. Y0. Z30.`).
+  bool approach = false;
   std::string name;                 // the command that made it ("@line"), for reports
   std::size_t where = 0;            // expected: command index in the stream; actual: NC line
 };
@@ -117,7 +120,8 @@ struct Result {
 
 // Compares two normalised sources event by event; stops at the first divergence. An optional
 // expected move is matched when the program makes it (alone, or as the end of a longer move in its
-// line), and passed over when it does not.
+// line), and passed over when it does not. A dwell the program adds where the toolpath has none moves
+// nothing and is passed over; a dwell the toolpath asks for must be in the program.
 Result compare(MotionSource& expected, MotionSource& actual, const Tolerances& tolerances);
 
 // One line for a report: "rapid to X1 Y2 Z3", "arc CCW XY to ... centre ... R5 sweep 90", ...

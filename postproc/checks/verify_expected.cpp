@@ -184,17 +184,23 @@ private:
     emit(t);
     if (double s = number_or(c, "spin", 0.0); s > 0) spindle(c, direction(c), s);
     auto xn = number(c, "xnext"), yn = number(c, "ynext"), zn = number(c, "znext");
+    const std::size_t before = out_.size();
     if (xn && yn) {
       Eigen::Vector3d p = position_;
       p.x() = *xn * scale_;
       p.y() = *yn * scale_;
       move(c, MotionKind::Rapid, p, 0.0, {true, true, false});
     }
+    // The approach in X Y, then down: a program may make both in one block (Motion::approach).
+    if (zn && out_.size() > before && out_.back().kind == MotionKind::Rapid) out_.back().approach = true;
     if (zn) {
       Eigen::Vector3d p = position_;
       p.z() = *zn * scale_;
       move(c, MotionKind::Rapid, p, 0.0, {false, false, true});
     }
+    // Where the tool goes next is the toolpath's to say (its next moves); many posts leave the
+    // approach to them (Motion::optional).
+    for (std::size_t i = before; i < out_.size(); ++i) out_[i].optional = true;
   }
 
   void turn_change_tool(const Command& c) {

@@ -38,6 +38,11 @@ constexpr KindSet kChecked = bit(K::call_proc) | bit(K::call_prms) | bit(K::loop
 bool StructureCheck::next_with_kind(toolpath::Command& out, CommandKind& kind) {
   if (!input_.next(out, kind)) return false;
   if (has(kChecked, kind) && out.is_stream_command()) check(out, kind);
+  // SolidCAM always says which way the tool turns; a hand-made job that does not (the manual's
+  // example job) means the usual CW, which posts test with `tool_direction eq CW`.
+  if ((kind == K::change_tool || (kind == K::other && toolpath::iequals(out.name, "@start_tool"))) &&
+      out.is_stream_command() && !out.find(toolpath::ParamKey::tool_direction))
+    out.set(toolpath::ParamKey::tool_direction, toolpath::Value::make_enum("CW"));
   return true;
 }
 
@@ -85,10 +90,12 @@ void StructureCheck::check(const toolpath::Command& c, CommandKind kind) {
       throw StreamError(c, fmt::format("procedure label {} is outside proc_num_min .. proc_num_max ({} .. {})",
                                        *label, procedures_.min.value_or(0), procedures_.max.value_or(0)));
   }
+  // SolidCAM asks for a number within the range; a job made for another machine keeps its own, posted
+  // as it is (an error here only stopped real posts on our sample jobs).
   if (kind == K::start_of_file) {
     if (auto n = number(c, "program_number"); n && !programs_.contains(static_cast<std::int64_t>(*n)))
-      throw StreamError(c, fmt::format("program number {} is outside prog_num_min .. prog_num_max ({} .. {})", *n,
-                                       programs_.min.value_or(0), programs_.max.value_or(0)));
+      warn(fmt::format("program number {} is outside prog_num_min .. prog_num_max ({} .. {}); posted as it is", *n,
+                       programs_.min.value_or(0), programs_.max.value_or(0)));
   }
   if (kind == K::home_number && num_homes_) {
     if (auto h = number(c, "home_number"); h && *h > static_cast<double>(*num_homes_))

@@ -1,7 +1,8 @@
 // Checks a structured toolpath (a SolidCAM trace already carries procedures, loops and
 // transformations) against the PRP's structure switches (spec 3.0, 3.5, 3.7, 3.9, 3.10). It never
-// restructures: mismatches are warnings; procedure labels or program numbers outside the PRP's
-// limits and controller compensation on a machine without it are errors.
+// restructures: mismatches and a program number outside the PRP's range are warnings; procedure
+// labels outside the PRP's limits and controller compensation on a machine without it are errors. A
+// tool change or spindle start without `tool_direction` gets CW (what SolidCAM sends for a usual tool).
 #pragma once
 
 #include <set>

@@ -51,11 +51,26 @@ TEST(StructureCheck, MismatchesAreWarnings) {
                                       "grooving cycle)"}));
 }
 
+TEST(StructureCheck, AProgramNumberOutOfRangeIsPostedWithAWarning) {
+  EXPECT_EQ(warnings_for({command("@start_of_file", {{"program_number", num(1000)}})}),
+            (std::vector<std::string>{"@start_of_file: program number 1000 is outside prog_num_min .. prog_num_max "
+                                      "(5000 .. 8999); posted as it is"}));
+}
+
+TEST(StructureCheck, AToolWithoutItsDirectionTurnsClockwise) {
+  auto params = prp::load_source(kPrp, "s.prp", prp::Units::Metric);
+  ListSource source({command("@change_tool", {{"tool_number", num(1)}}),
+                     command("@change_tool", {{"tool_number", num(2)}, {"tool_direction", word("CCW")}}),
+                     command("@start_tool", {{"spin", num(100)}})});
+  prp::StructureCheck check(source, params, nullptr);
+  std::vector<std::string> directions;
+  for (const auto& c : drain(check)) directions.push_back(c.find("tool_direction") ? c.find("tool_direction")->text : "-");
+  EXPECT_EQ(directions, (std::vector<std::string>{"CW", "CCW", "CW"}));
+}
+
 TEST(StructureCheck, LimitsAreErrors) {
   EXPECT_EQ(error_for(command("@proc", {{"label", num(100)}}, 7)),
             "command 7 (@proc): procedure label 100 is outside proc_num_min .. proc_num_max (1 .. 99)");
-  EXPECT_EQ(error_for(command("@start_of_file", {{"program_number", num(1000)}})),
-            "command 0 (@start_of_file): program number 1000 is outside prog_num_min .. prog_num_max (5000 .. 8999)");
   EXPECT_EQ(error_for(command("@compensation", {{"side", word("COMP_LEFT")}})),
             "command 0 (@compensation): compensation COMP_LEFT on a machine without it (comp_exist = N)");
 }

@@ -161,6 +161,54 @@ TEST(VerifyCompare, TheEndMoveMayBeMadeInPartOrInOneBlockOrLeftOut) {
   }
 }
 
+// What a program may add or join without a divergence (docs/pikocnc.md, "verify").
+TEST(VerifyCompare, WhatAProgramMayAddOrJoin) {
+  auto tool = [](std::int64_t t) {
+    Motion m;
+    m.kind = MotionKind::Tool;
+    m.tool = t;
+    return m;
+  };
+  auto dwell = [](double s) {
+    Motion m;
+    m.kind = MotionKind::Dwell;
+    m.seconds = s;
+    return m;
+  };
+  auto approach = [](Motion m, bool first) {
+    m.optional = true;
+    m.approach = first;
+    return m;
+  };
+  Motion xy = move(MotionKind::Rapid, {0, 0, 10}, {20, 5, 10});
+  xy.known = {true, true, false};
+  const std::vector<Motion> toolpath = {tool(1), spindle(1, 1000), approach(xy, true),
+                                        approach(move(MotionKind::Rapid, {20, 5, 10}, {20, 5, 30}), false),
+                                        move(MotionKind::Feed, {20, 5, 30}, {20, 5, 0}, 100)};
+  struct Case {
+    const char* name;
+    std::vector<Motion> program;
+    const char* divergence;
+  } cases[] = {
+      {"a retract up before the tool change, a dwell after M3, the approach in one block",
+       {move(MotionKind::Rapid, {0, 0, 0}, {0, 0, 50}), tool(1), spindle(1, 1000), dwell(1),
+        move(MotionKind::Rapid, {0, 0, 50}, {20, 5, 30}), move(MotionKind::Feed, {20, 5, 30}, {20, 5, 0}, 100)},
+       ""},
+      {"no approach: the next move is compared where it ends",
+       {tool(1), spindle(1, 1000), move(MotionKind::Feed, {0, 0, 0}, {20, 5, 0}, 100)}, ""},
+      {"an approach elsewhere", {tool(1), spindle(1, 1000), move(MotionKind::Rapid, {0, 0, 0}, {25, 5, 30})},
+       "expected a feed, the NC program makes a rapid"},
+      {"a move down before the tool change is one",
+       {move(MotionKind::Rapid, {0, 0, 10}, {0, 0, 5}), tool(1)}, "expected a tool change, the NC program makes a rapid"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    VectorSource expected(toolpath), actual(c.program);
+    auto r = postproc::verify::compare(expected, actual, {});
+    EXPECT_EQ(r.divergence ? r.divergence->what : "", c.divergence);
+  }
+}
+
 using Run = test_support::CliRun;
 const auto run = test_support::run_cli;
 
