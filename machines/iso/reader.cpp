@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -16,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include "machines/ncmodel/block_text.hpp"
 #include "machines/ncmodel/motion_out.hpp"
 #include "machines/pikocnc/geometry.hpp"
 #include "machines/pikocnc/line_reader.hpp"
@@ -39,10 +39,8 @@ constexpr Rules kRules[] = {
     {"grbl", "GRBL", false, false, false, false, false, false, 0.254},
 };
 
-struct BlockError {
-  std::size_t column;
-  std::string message;
-};
+using ncmodel::BlockError;
+using ncmodel::Cursor;
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -165,18 +163,7 @@ struct IsoReader::Impl {
   bool uniform_in(geo::Plane p) const { return scale[geo::axes(p).first] == scale[geo::axes(p).second]; }
 
   // ---------------------------------------------------------------- expressions (macro B)
-  struct Cursor {
-    std::string_view text;
-    std::size_t i = 0;
-    void skip() {
-      while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
-    }
-    char peek() {
-      skip();
-      return i < text.size() ? text[i] : '\0';
-    }
-    std::size_t column() const { return i + 1; }
-  };
+
 
   // A count, number or code as an integer; beyond a billion (or not a number) it is an error, never a
   // conversion the language leaves undefined.
@@ -185,27 +172,7 @@ struct IsoReader::Impl {
     return static_cast<long long>(v);
   }
 
-  double number_literal(Cursor& c) {
-    c.skip();
-    const std::size_t b = c.i;
-    if (c.i < c.text.size() && (c.text[c.i] == '+' || c.text[c.i] == '-')) ++c.i;
-    bool digits = false;
-    while (c.i < c.text.size() && (std::isdigit(static_cast<unsigned char>(c.text[c.i])) || c.text[c.i] == '.')) {
-      digits |= c.text[c.i] != '.';
-      ++c.i;
-    }
-    if (!digits) throw BlockError{b + 1, "expected a number"};
-    const char* first = c.text.data() + b;
-    const char* last = c.text.data() + c.i;
-    if (*first == '+') ++first;  // from_chars takes no '+'
-    double v = 0;
-    const auto [end, error] = std::from_chars(first, last, v);
-    if (error == std::errc::result_out_of_range || (error == std::errc{} && !std::isfinite(v)))
-      throw BlockError{b + 1, "number out of range"};
-    if (error != std::errc{} || end != last)
-      throw BlockError{b + 1, fmt::format("malformed number `{}`", c.text.substr(b, c.i - b))};
-    return v;
-  }
+
 
   double value(Cursor& c) {
     const char ch = c.peek();
@@ -237,21 +204,16 @@ struct IsoReader::Impl {
       ++c.i;
       return -value(c);
     }
-    return number_literal(c);
+    return c.number();
   }
 
-  std::string keyword(Cursor& c) {
-    c.skip();
-    const std::size_t b = c.i;
-    while (c.i < c.text.size() && std::isalpha(static_cast<unsigned char>(c.text[c.i]))) ++c.i;
-    return lower(c.text.substr(b, c.i - b));
-  }
+
 
   // SIN COS TAN (degrees), ATAN[a]/[b], SQRT ABS ROUND FIX FUP of a [ ] argument. FIX and FUP: Fanuc
   // drops or adds the fraction (toward or away from zero); LinuxCNC rounds down or up.
   double function(Cursor& c) {
     const std::size_t column = c.column();
-    const std::string name = keyword(c);
+    const std::string name = c.keyword();
     if (c.peek() != '[') throw BlockError{column, fmt::format("expected a number, found `{}`", name)};
     const double a = value(c);
     constexpr double kDegree = 3.14159265358979323846 / 180;
@@ -312,7 +274,7 @@ struct IsoReader::Impl {
     double v = sum(c);
     for (;;) {
       const std::size_t save = c.i;
-      const std::string op = keyword(c);
+      const std::string op = c.keyword();
       if (op == "eq") v = v == sum(c);
       else if (op == "ne") v = v != sum(c);
       else if (op == "lt") v = v < sum(c);
@@ -407,14 +369,14 @@ struct IsoReader::Impl {
     // A block number
     if (c.peek() == 'N' || c.peek() == 'n') {
       const std::size_t save = c.i++;
-      if (std::isdigit(static_cast<unsigned char>(c.peek()))) number_literal(c);
+      if (std::isdigit(static_cast<unsigned char>(c.peek()))) c.number();
       else c.i = save;
     }
     // :<n>, the ISO tape code's O: a program number (Mach3 labels its subprograms so)
     if (c.peek() == ':') {
       const std::size_t col = c.column();
       ++c.i;
-      whole(number_literal(c), col, "program number");
+      whole(c.number(), col, "program number");
       if (!rules.subprograms) throw BlockError{col, fmt::format("{} takes no program numbers", rules.title)};
       return;
     }
@@ -424,8 +386,8 @@ struct IsoReader::Impl {
       ++c.i;
       if (!std::isdigit(static_cast<unsigned char>(c.peek())))
         throw BlockError{col, "o<name> words are not modelled: use numbered o-words"};
-      const long long number = whole(number_literal(c), col, "o-word number");
-      const std::string word = keyword(c);
+      const long long number = whole(c.number(), col, "o-word number");
+      const std::string word = c.keyword();
       if (word.empty()) {
         if (!rules.subprograms) throw BlockError{col, fmt::format("{} takes no O program numbers", rules.title)};
         return;  // a program's number: reached in sequence, it is only a label
@@ -435,7 +397,7 @@ struct IsoReader::Impl {
     }
     if (rules.macro_b) {
       const std::size_t save = c.i;
-      const std::string word = keyword(c);
+      const std::string word = c.keyword();
       if (word == "while") return macro_while(c);
       if (word.size() == 3 && word == "end") return macro_end(c);
       c.i = save;
@@ -492,8 +454,8 @@ struct IsoReader::Impl {
   // WHILE [cond] DOm: the body runs while the condition holds; ENDm goes back to the WHILE.
   void macro_while(Cursor& c) {
     const double condition = value(c);
-    if (keyword(c) != "do") throw BlockError{c.column(), "expected DO after WHILE [...]"};
-    const std::string key = fmt::format("do{}", whole(number_literal(c), c.column(), "DO number"));
+    if (c.keyword() != "do") throw BlockError{c.column(), "expected DO after WHILE [...]"};
+    const std::string key = fmt::format("do{}", whole(c.number(), c.column(), "DO number"));
     if (!repeats.empty() && repeats.back().key == key) repeats.pop_back();  // the loop's own WHILE again
     if (condition != 0) {
       repeats.push_back({key, before, 0});
@@ -504,7 +466,7 @@ struct IsoReader::Impl {
   }
 
   void macro_end(Cursor& c) {
-    const std::string key = fmt::format("do{}", whole(number_literal(c), c.column(), "DO number"));
+    const std::string key = fmt::format("do{}", whole(c.number(), c.column(), "DO number"));
     if (repeats.empty() || repeats.back().key != key) throw BlockError{1, fmt::format("END{} without its WHILE", key.substr(2))};
     lines->seek(repeats.back().body);  // the WHILE tests again
   }
@@ -518,13 +480,13 @@ struct IsoReader::Impl {
       ++c.i;
       while (c.i < c.text.size() && std::isdigit(static_cast<unsigned char>(c.text[c.i]))) ++c.i;
     }
-    const std::string word = keyword(c);
+    const std::string word = c.keyword();
     const std::size_t b = c.i;
     while (c.i < c.text.size() && std::isdigit(static_cast<unsigned char>(c.text[c.i]))) ++c.i;
     const std::string digits(c.text.substr(b, c.i - b));
     if (word == "end" && !digits.empty()) return word + digits;
     if (word == "o" && !digits.empty()) {
-      const std::string what = keyword(c);
+      const std::string what = c.keyword();
       return what.empty() ? "" : "o" + digits + " " + what;
     }
     return "";

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include "machines/pikocnc/geometry.hpp"
+#include "machines/ncmodel/block_text.hpp"
 #include "machines/ncmodel/motion_out.hpp"
 #include "machines/pikocnc/line_reader.hpp"
 #include "toolpath/error.hpp"
@@ -43,10 +44,8 @@ bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) ||
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // A block that cannot be executed: the message names what and where (1-based column).
-struct BlockError {
-  std::size_t column;
-  std::string message;
-};
+using ncmodel::BlockError;
+using ncmodel::Cursor;
 
 // Words that change nothing the motion shows (smoothing, look-ahead, work offsets whose values the
 // program does not give): accepted without a word.
@@ -223,54 +222,9 @@ struct SinumerikReader::Impl {
   }
 
   // ---------------------------------------------------------------- lexing and expressions
-  struct Cursor {
-    std::string_view text;
-    std::size_t i = 0;
-    void skip() {
-      while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
-    }
-    bool at_end() {
-      skip();
-      return i >= text.size();
-    }
-    char peek() {
-      skip();
-      return i < text.size() ? text[i] : '\0';
-    }
-    std::size_t column() const { return i + 1; }
-    std::string ident() {
-      skip();
-      std::size_t b = i;
-      if (i < text.size() && ident_start(text[i]))
-        while (i < text.size() && ident_char(text[i])) ++i;
-      return std::string(text.substr(b, i - b));
-    }
-    bool eat(char c) {
-      if (peek() != c) return false;
-      ++i;
-      return true;
-    }
-    bool eat(std::string_view s) {
-      skip();
-      if (text.substr(i, s.size()) != s) return false;
-      i += s.size();
-      return true;
-    }
-  };
 
-  double literal(Cursor& c) {
-    c.skip();
-    const std::size_t b = c.i;
-    if (c.i < c.text.size() && (c.text[c.i] == '+' || c.text[c.i] == '-')) ++c.i;
-    bool digits = false;
-    while (c.i < c.text.size() && (std::isdigit(static_cast<unsigned char>(c.text[c.i])) || c.text[c.i] == '.')) {
-      digits |= c.text[c.i] != '.';
-      ++c.i;
-    }
-    if (!digits) throw BlockError{b + 1, "expected a number"};
-    std::string s(c.text.substr(b, c.i - b));
-    return std::strtod(s.c_str(), nullptr);
-  }
+
+
 
   double primary(Cursor& c) {
     const char ch = c.peek();
@@ -285,7 +239,7 @@ struct SinumerikReader::Impl {
       const double v = primary(c);
       return ch == '-' ? -v : v;
     }
-    if (std::isdigit(static_cast<unsigned char>(ch)) || ch == '.') return literal(c);
+    if (std::isdigit(static_cast<unsigned char>(ch)) || ch == '.') return c.number();
     if (ident_start(ch)) {
       const std::size_t col = c.column();
       const std::string name = upper(c.ident());
@@ -412,7 +366,7 @@ struct SinumerikReader::Impl {
            c.text[c.i + 1] == '.' || c.text[c.i + 1] == '+')) {
         const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
         ++c.i;
-        const double v = literal(c);
+        const double v = c.number();
         address(b, letter, {v, Dim::Modal}, col);
         continue;
       }

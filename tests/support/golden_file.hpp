@@ -8,7 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <algorithm>
 #include <string>
+#include <vector>
 
 namespace test_support {
 
@@ -26,6 +28,15 @@ inline void expect_golden(const std::filesystem::path& file, const std::string& 
     return;
   }
   EXPECT_EQ(std::filesystem::exists(file) ? slurp(file) : std::string(), actual) << file;
+}
+
+// The golden folders below `root` (one test case each), sorted by name.
+inline std::vector<std::string> subfolders(const std::filesystem::path& root) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(root))
+    if (e.is_directory()) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 }  // namespace test_support

@@ -44,15 +44,8 @@ TEST_P(Golden, ReadsBackAsExpected) {
   test_support::expect_golden(dir / "expected.diagnostics", diagnostics);
 }
 
-std::vector<std::string> cases() {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(kRoot))
-    if (e.is_directory()) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
-INSTANTIATE_TEST_SUITE_P(Iso, Golden, ::testing::ValuesIn(cases()), [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(Iso, Golden, ::testing::ValuesIn(test_support::subfolders(kRoot)), [](const auto& info) {
   std::string name = info.param;
   std::replace(name.begin(), name.end(), '-', '_');
   return name;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "machines/pikocnc/reader.hpp"
+#include "tests/support/golden_file.hpp"
 #include "toolpath/trace_writer.hpp"
 
 namespace fs = std::filesystem;
@@ -20,12 +21,7 @@ namespace {
 
 const fs::path kRoot = "machines/pikocnc/golden";
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 pikocnc::Axes5 axes(std::istringstream& in) {
   pikocnc::Axes5 a{};
@@ -145,15 +141,8 @@ TEST_P(Golden, MatchesExpectedStream) {
   check(dir / "expected.error", r.error, update, true);
 }
 
-std::vector<std::string> cases() {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(kRoot))
-    if (e.is_directory()) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
-INSTANTIATE_TEST_SUITE_P(PikoCnc, Golden, testing::ValuesIn(cases()),
+INSTANTIATE_TEST_SUITE_P(PikoCnc, Golden, testing::ValuesIn(test_support::subfolders(kRoot)),
                          [](const testing::TestParamInfo<std::string>& i) {
                            std::string n = i.param;
                            for (char& c : n) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';

@@ -1,0 +1,34 @@
+// What the block-by-block readers (Sinumerik, the ISO family) share to read a block's text: a cursor
+// over it, numbers read strictly, and the error that makes a reader skip the block.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace ncmodel {
+
+// A block the model cannot execute: reported at `column` (1-based) and skipped.
+struct BlockError {
+  std::size_t column;
+  std::string message;
+};
+
+struct Cursor {
+  std::string_view text;
+  std::size_t i = 0;
+
+  void skip();  // blanks and tabs
+  bool at_end();
+  char peek();  // after blanks; '\0' at the end
+  std::size_t column() const { return i + 1; }
+  bool eat(char c);
+  bool eat(std::string_view s);
+  std::string ident();    // a letter or _, then letters, digits and _, as written
+  std::string keyword();  // letters only, lower case
+  // [+|-]digits[.digits]: a finite number, or BlockError ("expected a number", "malformed number",
+  // "number out of range").
+  double number();
+};
+
+}  // namespace ncmodel
