@@ -700,7 +700,15 @@ struct IsoReader::Impl {
     } else if (new_cycle) {
       define_cycle(*new_cycle, w);
     } else {
-      const bool axes = find(w, 'X') || find(w, 'Y') || find(w, 'Z');
+      // Rotary axes (a 4th axis on Mach3, LinuxCNC): the angle the next move carries.
+      bool rotary = false;
+      for (int a = 0; a < 3; ++a)
+        if (const Word* r = find(w, "ABC"[a])) {
+          const double now = out.rotary(a).value_or(0.0);
+          out.set_rotary(a, absolute ? r->value : now + r->value);
+          rotary = true;
+        }
+      const bool axes = rotary || find(w, 'X') || find(w, 'Y') || find(w, 'Z');
       if (motion >= 73 && cycle_defined && (find(w, 'X') || find(w, 'Y'))) {
         position_hole(w);
       } else if (axes || (motion_given && (find(w, 'I') || find(w, 'J') || find(w, 'K') || find(w, 'R')))) {

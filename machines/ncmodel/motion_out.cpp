@@ -51,6 +51,9 @@ void MotionOut::position_words(Command& c, const Eigen::Vector3d& p) {
   number(c, K::xpos, p.x());
   number(c, K::ypos, p.y());
   number(c, K::zpos, p.z());
+  static constexpr std::array<K, 3> kRotary = {K::apos, K::bpos, K::cpos};
+  for (std::size_t i = 0; i < 3; ++i)
+    if (rotary_[i]) number(c, kRotary[i], *rotary_[i]);
 }
 
 void MotionOut::rapid(const Eigen::Vector3d& to) {

@@ -27,6 +27,10 @@ public:
   // a long program allocates nothing per command. False when none waits.
   bool take(toolpath::Command& out);
   const Eigen::Vector3d& position() const { return position_; }
+  // Rotary axes A B C (0 1 2), degrees: once a program names one, every move carries its angle
+  // (apos, bpos, cpos), as a 4-axis toolpath does. nullopt: not used yet.
+  const std::optional<double>& rotary(int axis) const { return rotary_[static_cast<std::size_t>(axis)]; }
+  void set_rotary(int axis, double degrees) { rotary_[static_cast<std::size_t>(axis)] = degrees; }
 
   void rapid(const Eigen::Vector3d& to);
   void line(const Eigen::Vector3d& to, double feed);
@@ -74,6 +78,7 @@ private:
   int spindle_ = 5;
   double speed_ = 0;
   std::size_t made_ = 0;  // commands made so far
+  std::array<std::optional<double>, 3> rotary_;
 };
 
 }  // namespace ncmodel
