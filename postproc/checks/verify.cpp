@@ -30,14 +30,14 @@ std::string word(const Command& c, std::string_view name) {
 class NcMotion final : public MotionSource {
 public:
   NcMotion(std::unique_ptr<machines::ProgramSource> reader, const machines::VerifyProfile& profile,
-           std::function<void(const Command&)> observe)
+           std::function<void(const Command&, std::size_t)> observe)
       : reader_(std::move(reader)), profile_(profile), observe_(std::move(observe)) {
     started_ = profile.planar_speeds;  // a planar program starts at its origin, X0 Y0
   }
 
   bool next(Motion& out) override {
     while (reader_->next(command_)) {
-      if (observe_) observe_(command_);
+      if (observe_) observe_(command_, reader_->line());
       if (convert(command_, out)) return true;
     }
     return false;
@@ -118,7 +118,7 @@ private:
 
   std::unique_ptr<machines::ProgramSource> reader_;
   machines::VerifyProfile profile_;
-  std::function<void(const Command&)> observe_;
+  std::function<void(const Command&, std::size_t)> observe_;
   Command command_;
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
   bool started_ = false;  // the first move's start is the controller's, not the program's
@@ -253,7 +253,8 @@ std::string difference(const Motion& a, const Motion& b, const Tolerances& given
 
 std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program, const machines::Controller& controller,
                                         std::string_view dialect, const machines::ReadOptions& options,
-                                        std::ostream& warnings, std::function<void(const Command&)> observe) {
+                                        std::ostream& warnings,
+                                        std::function<void(const Command&, std::size_t)> observe) {
   machines::ReadOptions read = options;
   read.for_verify = true;
   return std::make_unique<NcMotion>(controller.open(program.string(), dialect, read, warnings),

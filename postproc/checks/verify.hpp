@@ -22,6 +22,7 @@
 #include "machines/registry/controller.hpp"
 #include "postproc/engine/engine.hpp"
 #include "toolpath/command.hpp"
+#include "toolpath/diagnostic.hpp"
 #include "toolpath/geometry.hpp"
 
 namespace prp {
@@ -91,11 +92,11 @@ private:
 // The NC side: the motion a controller's model makes for an NC program, read for verify (the
 // programmed path: cutter compensation off). Events carry their NC line. The model's warnings go to
 // `warnings` when the program ends; its errors are thrown (toolpath::InputError).
-// `observe` (when set) sees every command the model makes, in order.
+// `observe` (when set) sees every command the model makes, in order, with its NC line.
 std::unique_ptr<MotionSource> nc_motion(const std::filesystem::path& program, const machines::Controller& controller,
                                         std::string_view dialect, const machines::ReadOptions& options,
                                         std::ostream& warnings,
-                                        std::function<void(const toolpath::Command&)> observe = nullptr);
+                                        std::function<void(const toolpath::Command&, std::size_t)> observe = nullptr);
 
 // The toolpath side as the controller's programs can say it (verify_profile.cpp). Under
 // VerifyProfile::planar_speeds: moves projected on X Y from the program origin, feeds turned into the
@@ -143,8 +144,38 @@ struct CycleTime {
 // "3 min 12 s (T3 1 min 40 s, T7 1 min 32 s)".
 std::string describe(const CycleTime& time);
 
+// What a program does that no machine should, whatever the toolpath says (verify_state.cpp;
+// docs/pikocnc.md, "Machine-state checks"), found as the model runs the program. Each kind is
+// reported once, at its first NC line, with how often it happened.
+struct Finding {
+  toolpath::Severity severity = toolpath::Severity::Warning;  // Error: scrap; Warning: suspect
+  std::size_t line = 0;                                        // NC line of the first one
+  std::size_t count = 0;
+  std::string what;
+};
+
+class StateChecks {
+public:
+  // `profile`: a planar_speeds machine (2XAxisCNC) moves only at speeds, with the spindle on or off:
+  // the spindle and feed checks do not apply.
+  explicit StateChecks(const machines::VerifyProfile& profile) : planar_(profile.planar_speeds) {}
+  void command(const toolpath::Command& c, std::size_t line);  // the model's commands, in order
+  const std::vector<Finding>& findings() const { return findings_; }
+  bool any_error() const;
+
+private:
+  void find(toolpath::Severity severity, std::size_t line, std::string what);
+
+  std::vector<Finding> findings_;
+  Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
+  std::optional<double> plunge_from_;  // the Z the last downward feed started from
+  bool planar_ = false;
+  bool spindle_on_ = false, compensation_changed_ = false, machine_moved_ = false;
+};
+
 struct JobReport {
   Result result;
+  std::vector<Finding> findings;   // of the program read back (up to a divergence)
   CycleTime cycle_time;            // of the program read back (up to a divergence)
   std::filesystem::path program;   // the NC program that was read back (removed unless kept)
   std::string expected_command;    // "command #21 @arc" of the expected side of a divergence

@@ -85,7 +85,9 @@ JobReport verify_job(const Engine& engine, const std::string& job, const Toleran
   CycleTime& time = report.cycle_time;
   time.tools.push_back({});
   double tool_start = 0;
-  auto observe = [&](const toolpath::Command& c) {
+  StateChecks checks(profile);
+  auto observe = [&](const toolpath::Command& c, std::size_t line) {
+    checks.command(c, line);
     const bool change = toolpath::iequals(c.name, "@change_tool") || toolpath::iequals(c.name, "@turn_change_tool");
     if (change) {
       const toolpath::Value* t = c.find("tool_number");
@@ -103,6 +105,7 @@ JobReport verify_job(const Engine& engine, const std::string& job, const Toleran
   auto expected_motion = normalised(*expected_raw, tolerances);
   auto actual_motion = normalised(*actual_raw, tolerances);
   report.result = compare(*expected_motion, *actual_motion, tolerances);
+  report.findings = checks.findings();
   time.tools.back().seconds = estimate.seconds() - tool_start;
   time.seconds = estimate.seconds();
   time.rapid_feed_missing = estimate.rapid_feed_missing();

@@ -68,12 +68,21 @@ int run_verify(const Arguments& args, std::ostream& out, std::ostream& err) {
   const auto& r = report.result;
   // Say which controller model read the NC: a post for another controller is not verified by it.
   const std::string model = fmt::format("the {} model (--dialect {})", controller.title(), dialect);
+  // The machine-state findings: an error fails the run even when the motion matches.
+  bool scrap = false;
+  for (const auto& f : report.findings) {
+    const bool error = f.severity == toolpath::Severity::Error;
+    scrap |= error;
+    out << fmt::format("{}:{}: {}: {}{}\n", report.program.filename().string(), f.line, error ? "error" : "warning",
+                       f.what, f.count > 1 ? fmt::format(" ({} times)", f.count) : "");
+  }
   if (!r.divergence) {
-    if (!args.has("--quiet")) {
-      out << fmt::format("{}: ok, {} motion events match; NC read by {}\n", job, r.compared, model);
+    if (!args.has("--quiet") || scrap) {
+      out << fmt::format("{}: {}, {} motion events match; NC read by {}\n", job,
+                         scrap ? "the motion matches but the machine state does not" : "ok", r.compared, model);
       out << fmt::format("  cycle time {}\n", verify::describe(report.cycle_time));
     }
-    return kOk;
+    return scrap ? kBadInput : kOk;
   }
   const auto& d = *r.divergence;
   out << fmt::format("{}: divergence at motion event {}: {}\n", job, d.ordinal, d.what);

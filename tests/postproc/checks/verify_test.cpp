@@ -2,6 +2,8 @@
 // caught at the right command and NC line, and `run --dialect pikocnc` posting G-code again.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -206,6 +208,51 @@ TEST(VerifyCompare, WhatAProgramMayAddOrJoin) {
     VectorSource expected(toolpath), actual(c.program);
     auto r = postproc::verify::compare(expected, actual, {});
     EXPECT_EQ(r.divergence ? r.divergence->what : "", c.divergence);
+  }
+}
+
+// Machine-state checks: what no machine should do, whatever the toolpath says.
+TEST(VerifyStateChecks, FindWhatMakesScrapOrIsSuspect) {
+  auto cmd = [](const char* name, std::vector<std::pair<const char*, double>> numbers = {}) {
+    toolpath::Command c;
+    c.name = name;
+    for (const auto& [k, v] : numbers) c.set(k, toolpath::Value::make_numeric(v));
+    return c;
+  };
+  auto rapid = [&](double x, double y, double z) { return cmd("@rapid_move", {{"xpos", x}, {"ypos", y}, {"zpos", z}}); };
+  auto line = [&](double x, double y, double z, double f) {
+    return cmd("@line", {{"xpos", x}, {"ypos", y}, {"zpos", z}, {"feed", f}});
+  };
+  struct Case {
+    const char* name;
+    std::vector<toolpath::Command> program;
+    std::vector<std::string> findings;  // "line: severity: what (count)"
+  } cases[] = {
+      {"a clean cut", {cmd("@start_tool"), rapid(0, 0, 10), rapid(0, 0, 2), line(0, 0, -2, 100), line(5, 0, -2, 100),
+                       rapid(5, 0, 10), rapid(9, 9, 10), cmd("@change_tool")}, {}},
+      {"a feed with the spindle stopped, at feed 0", {line(0, 0, -1, 100), cmd("@start_tool"), line(1, 0, -1, 0)},
+       {"1: error: a feed move with the spindle stopped (1)", "3: error: a feed move at feed 0: no F was given (1)"}},
+      {"a rapid across at depth, a tool change down there",
+       {cmd("@start_tool"), rapid(0, 0, 2), line(0, 0, -2, 100), rapid(5, 0, -2), cmd("@change_tool")},
+       {"4: warning: a rapid across X Y at Z-2.000, below Z2.000 where the last plunge started (1)",
+        "5: warning: a tool change with the tool at Z-2.000, below Z2.000 where its last plunge started: no retract (1)"}},
+      {"homed before the tool change", {cmd("@start_tool"), rapid(0, 0, 2), line(0, 0, -2, 100), cmd("@machine_move"),
+                                       cmd("@change_tool")}, {}},
+      {"compensation switched on an arc",
+       {cmd("@start_tool"), cmd("@compensation"),
+        cmd("@arc", {{"xpos", 1}, {"ypos", 1}, {"zpos", 0}, {"feed", 100}})},
+       {"3: warning: cutter compensation switched on or off on an arc (controls want a line for it: Fanuc alarm "
+        "PS0034) (1)"}},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    postproc::verify::StateChecks checks(machines::VerifyProfile{});
+    for (std::size_t i = 0; i < c.program.size(); ++i) checks.command(c.program[i], i + 1);
+    std::vector<std::string> got;
+    for (const auto& f : checks.findings())
+      got.push_back(fmt::format("{}: {}: {} ({})", f.line, f.severity == toolpath::Severity::Error ? "error" : "warning",
+                                f.what, f.count));
+    EXPECT_EQ(got, c.findings);
   }
 }
 
