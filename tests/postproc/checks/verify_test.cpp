@@ -126,6 +126,13 @@ TEST(VerifyCompare, OneSideEndingEarlyIsADivergence) {
   EXPECT_EQ(r.divergence->what, "the NC program ends here; the toolpath goes on");
 }
 
+// What compare() says of a toolpath and a program: the divergence, or "" when they match.
+std::string divergence(const std::vector<Motion>& toolpath, const std::vector<Motion>& program) {
+  VectorSource expected(toolpath), actual(program);
+  auto r = postproc::verify::compare(expected, actual, {});
+  return r.divergence ? r.divergence->what : "";
+}
+
 // The end position (@end_program) is optional: a post may home the machine instead (G28, G53).
 TEST(VerifyCompare, TheEndMoveMayBeMadeInPartOrInOneBlockOrLeftOut) {
   auto optional = [](Motion m) {
@@ -155,12 +162,7 @@ TEST(VerifyCompare, TheEndMoveMayBeMadeInPartOrInOneBlockOrLeftOut) {
        "the NC program goes on after the toolpath ends"},
       {"no retract", {cut}, "the NC program ends here; the toolpath goes on"},
   };
-  for (const auto& c : cases) {
-    SCOPED_TRACE(c.name);
-    VectorSource expected(toolpath), actual(c.program);
-    auto r = postproc::verify::compare(expected, actual, {});
-    EXPECT_EQ(r.divergence ? r.divergence->what : "", c.divergence);
-  }
+  for (const auto& c : cases) EXPECT_EQ(divergence(toolpath, c.program), c.divergence) << c.name;
 }
 
 // What a program may add or join without a divergence (docs/pikocnc.md, "verify").
@@ -203,12 +205,7 @@ TEST(VerifyCompare, WhatAProgramMayAddOrJoin) {
       {"a move down before the tool change is one",
        {move(MotionKind::Rapid, {0, 0, 10}, {0, 0, 5}), tool(1)}, "expected a tool change, the NC program makes a rapid"},
   };
-  for (const auto& c : cases) {
-    SCOPED_TRACE(c.name);
-    VectorSource expected(toolpath), actual(c.program);
-    auto r = postproc::verify::compare(expected, actual, {});
-    EXPECT_EQ(r.divergence ? r.divergence->what : "", c.divergence);
-  }
+  for (const auto& c : cases) EXPECT_EQ(divergence(toolpath, c.program), c.divergence) << c.name;
 }
 
 // Machine-state checks: what no machine should do, whatever the toolpath says.
