@@ -298,10 +298,12 @@ struct IsoReader::Impl {
     return true;
   }
 
-  // Removes ( ) comments and what follows `;`.
-  static std::string strip(std::string_view line, bool& unclosed) {
-    std::string out;
+  // The line without its ( ) comments and what follows `;`, in `out` (reused: no allocation per
+  // block). A line without comments is returned as it is.
+  static std::string_view strip(std::string_view line, bool& unclosed, std::string& out) {
     unclosed = false;
+    if (line.find_first_of("(;") == std::string_view::npos) return line;
+    out.clear();
     for (std::size_t i = 0; i < line.size(); ++i) {
       if (line[i] == ';') break;
       if (line[i] == '(') {
@@ -318,6 +320,7 @@ struct IsoReader::Impl {
     }
     return out;
   }
+  std::string block_text_, skipped_text_;  // strip()'s buffers: the block's, and skip_to()'s
 
   void run() {
     std::string_view raw;
@@ -348,7 +351,7 @@ struct IsoReader::Impl {
 
   void block(std::string_view raw) {
     bool unclosed = false;
-    std::string text = strip(raw, unclosed);
+    const std::string_view text = strip(raw, unclosed, block_text_);
     if (unclosed) throw BlockError{raw.find('(') + 1, "a comment without its `)`"};
     const std::size_t first = text.find_first_not_of(" \t\r");
     if (first == std::string::npos) return;
@@ -408,9 +411,10 @@ struct IsoReader::Impl {
     while (c.peek() != '\0') {
       const std::size_t col = c.column();
       const char ch = c.peek();
-      if (!std::isalpha(static_cast<unsigned char>(ch))) throw BlockError{col, fmt::format("unexpected `{}`", ch)};
+      const char upper = static_cast<char>(ch & ~0x20);  // ASCII letters only
+      if (upper < 'A' || upper > 'Z') throw BlockError{col, fmt::format("unexpected `{}`", ch)};
       ++c.i;
-      words.push_back({static_cast<char>(std::toupper(static_cast<unsigned char>(ch))), value(c), col});
+      words.push_back({upper, value(c), col});
     }
     execute(words);
   }
@@ -498,7 +502,7 @@ struct IsoReader::Impl {
     for (;;) {
       if (!read_line(text)) throw BlockError{1, fmt::format("{} not found", what)};
       bool unclosed = false;
-      if (match(strip(text, unclosed))) return;
+      if (match(strip(text, unclosed, skipped_text_))) return;
     }
   }
 

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <system_error>
 
 namespace ncmodel {
@@ -66,6 +67,31 @@ double Cursor::number() {
   if (!digits) throw BlockError{b + 1, "expected a number"};
   const char* first = text.data() + b;
   const char* last = text.data() + i;
+  // The usual case, up to 15 significant digits and one point: the digits as an integer, divided by
+  // a power of ten. Both are exact doubles, so the quotient is correctly rounded: from_chars' value.
+  {
+    static constexpr double kTens[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    const char* p = first;
+    const bool negative = *p == '-';
+    if (*p == '-' || *p == '+') ++p;
+    std::uint64_t mantissa = 0;
+    int count = 0, decimals = -1, points = 0;
+    for (; p < last; ++p) {
+      if (*p == '.') {
+        ++points;
+        decimals = 0;
+        continue;
+      }
+      if (count == 0 && *p == '0' && decimals < 0) continue;  // leading zeros of the integer part
+      mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
+      ++count;
+      if (decimals >= 0) ++decimals;
+    }
+    if (points <= 1 && count <= 15 && decimals <= 15) {
+      const double v = static_cast<double>(mantissa) / kTens[decimals < 0 ? 0 : decimals];
+      return negative ? -v : v;
+    }
+  }
   if (*first == '+') ++first;  // from_chars takes no '+'
   double v = 0;
   const auto [end, error] = std::from_chars(first, last, v);
