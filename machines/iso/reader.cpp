@@ -124,22 +124,16 @@ struct IsoReader::Impl {
     for (;;) {
       const pikocnc::LineReader::Mark at = lines->mark();
       if (!lines->next(text)) break;
-      std::size_t i = text.find_first_not_of(" \t");
-      if (i == std::string_view::npos) continue;
-      if (text[i] == 'N' || text[i] == 'n') {  // a block number before it
-        ++i;
-        while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
-        while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
-      }
+      Cursor c{text, 0};
+      skip_block_number(c);
       // O<n>, or :<n> (the ISO tape code's program number, Mach3's subprogram label)
-      if (i >= text.size() || (text[i] != 'O' && text[i] != 'o' && text[i] != ':')) continue;
-      std::size_t j = i + 1;
-      while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) ++j;
-      if (j == i + 1 || j - i > 10) continue;
-      const long long number = std::strtoll(std::string(text.substr(i + 1, j - i - 1)).c_str(), nullptr, 10);
-      std::string rest = lower(text.substr(j));
-      rest.erase(0, rest.find_first_not_of(" \t"));
-      if (text[i] != ':' && rest.rfind("sub", 0) == 0) subs.emplace(fmt::format("o{}", number), at);
+      const char head = c.peek();
+      if (head != 'O' && head != 'o' && head != ':') continue;
+      ++c.i;
+      const std::string_view digits = c.digits();
+      if (digits.empty() || digits.size() > 9) continue;
+      const long long number = std::strtoll(std::string(digits).c_str(), nullptr, 10);
+      if (head != ':' && c.keyword().rfind("sub", 0) == 0) subs.emplace(fmt::format("o{}", number), at);
       else if (!programs.count(number)) programs.emplace(number, at);
     }
     lines->seek(start);
@@ -368,13 +362,7 @@ struct IsoReader::Impl {
       return;
     }
     Cursor c{text, first};
-    if (c.peek() == '/') ++c.i;  // block delete: executed (the switch is off)
-    // A block number
-    if (c.peek() == 'N' || c.peek() == 'n') {
-      const std::size_t save = c.i++;
-      if (std::isdigit(static_cast<unsigned char>(c.peek()))) c.number();
-      else c.i = save;
-    }
+    skip_block_number(c);
     // :<n>, the ISO tape code's O: a program number (Mach3 labels its subprograms so)
     if (c.peek() == ':') {
       const std::size_t col = c.column();
@@ -475,19 +463,21 @@ struct IsoReader::Impl {
     lines->seek(repeats.back().body);  // the WHILE tests again
   }
 
+  // A block-delete `/` (the block is executed: the switch is off) and the N number a block may open with.
+  static void skip_block_number(Cursor& c) {
+    if (c.peek() == '/') ++c.i;
+    if (c.peek() != 'N' && c.peek() != 'n') return;
+    const std::size_t save = c.i++;
+    if (c.digits().empty()) c.i = save;  // not a number: a word of the block
+  }
+
   // How a block opens, lower case, the block number left out: "end1" (END1), "o101 endrepeat"
   // (o101 endrepeat [..]), "" for anything else. What skip_to looks for.
   std::string opening(std::string_view line) {
     Cursor c{line, 0};
-    if (c.peek() == '/') ++c.i;
-    if (c.peek() == 'N' || c.peek() == 'n') {
-      ++c.i;
-      while (c.i < c.text.size() && std::isdigit(static_cast<unsigned char>(c.text[c.i]))) ++c.i;
-    }
+    skip_block_number(c);
     const std::string word = c.keyword();
-    const std::size_t b = c.i;
-    while (c.i < c.text.size() && std::isdigit(static_cast<unsigned char>(c.text[c.i]))) ++c.i;
-    const std::string digits(c.text.substr(b, c.i - b));
+    const std::string digits(c.digits());
     if (word == "end" && !digits.empty()) return word + digits;
     if (word == "o" && !digits.empty()) {
       const std::string what = c.keyword();

@@ -10,6 +10,9 @@
 
 namespace ncmodel {
 
+bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
 void Cursor::skip() {
   while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
 }
@@ -40,11 +43,15 @@ bool Cursor::eat(std::string_view s) {
 std::string Cursor::ident() {
   skip();
   const std::size_t b = i;
-  auto start = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
-  auto inner = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  if (i < text.size() && start(text[i]))
-    while (i < text.size() && inner(text[i])) ++i;
+  if (i < text.size() && ident_start(text[i]))
+    while (i < text.size() && ident_char(text[i])) ++i;
   return std::string(text.substr(b, i - b));
+}
+
+std::string_view Cursor::digits() {
+  const std::size_t b = i;
+  while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+  return text.substr(b, i - b);
 }
 
 std::string Cursor::keyword() {

@@ -14,6 +14,10 @@ struct BlockError {
   std::string message;
 };
 
+// Sinumerik names and LinuxCNC-style words: a letter or _, then letters, digits and _.
+bool ident_start(char c);
+bool ident_char(char c);
+
 struct Cursor {
   std::string_view text;
   std::size_t i = 0;
@@ -26,6 +30,7 @@ struct Cursor {
   bool eat(std::string_view s);
   std::string ident();    // a letter or _, then letters, digits and _, as written
   std::string keyword();  // letters only, lower case
+  std::string_view digits();  // a run of digits where the cursor is (no blanks skipped); may be empty
   // [+|-]digits[.digits]: a finite number, or BlockError ("expected a number", "malformed number",
   // "number out of range").
   double number();

@@ -40,8 +40,8 @@ std::string upper(std::string_view s) {
   return out;
 }
 
-bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+using ncmodel::ident_char;
+using ncmodel::ident_start;
 
 // A block that cannot be executed: the message names what and where (1-based column).
 using ncmodel::BlockError;
