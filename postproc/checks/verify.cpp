@@ -313,7 +313,8 @@ Result compare(MotionSource& expected, MotionSource& actual, const Tolerances& t
       result.divergence = Divergence{ordinal, "the NC program ends here; the toolpath goes on", a, std::nullopt};
       return result;
     }
-    if (!has_a && b.kind == MotionKind::Dwell) {  // see below: an added dwell
+    // A dwell the program adds (to let the spindle reach its speed, `M3 G4 P1`) moves nothing: passed over.
+    if (b.kind == MotionKind::Dwell && (!has_a || a.kind != MotionKind::Dwell)) {
       has_b = actual.next(b);
       continue;
     }
@@ -325,11 +326,6 @@ Result compare(MotionSource& expected, MotionSource& actual, const Tolerances& t
     if (b.kind == MotionKind::Rapid && (a.kind == MotionKind::Tool || (a.kind == MotionKind::Spindle && a.spindle == 0)) &&
         std::abs(b.to.x() - b.from.x()) <= tolerances.position && std::abs(b.to.y() - b.from.y()) <= tolerances.position &&
         b.to.z() > b.from.z()) {
-      has_b = actual.next(b);
-      continue;
-    }
-    // A dwell the program adds (to let the spindle reach its speed, `M3 G4 P1`) moves nothing: passed over.
-    if (b.kind == MotionKind::Dwell && a.kind != MotionKind::Dwell) {
       has_b = actual.next(b);
       continue;
     }

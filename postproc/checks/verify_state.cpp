@@ -8,14 +8,13 @@
 #include <algorithm>
 
 #include "postproc/checks/verify.hpp"
+#include "postproc/checks/verify_modeller.hpp"
 #include "toolpath/value.hpp"
 
 namespace postproc::verify {
 namespace {
 
 constexpr double kTolerance = 0.001;  // mm
-
-bool is(const toolpath::Command& c, std::string_view name) { return toolpath::iequals(c.name, name); }
 
 }  // namespace
 
