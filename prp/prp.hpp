@@ -100,6 +100,10 @@ struct Record {
   toolpath::SourcePosition name_where;  // of the name (a VMID: the same)
 };
 
+// The parameter of a drill cycle record that holds its dwell (F_DRILL, F_BORING): the one whose name
+// says `delay` or `dwell`; nullopt when no parameter or more than one does.
+std::optional<std::string> dwell_parameter(const Record& record);
+
 // A key the spec does not document: kept verbatim, so the post can still read it.
 struct UnknownKey {
   std::string key;

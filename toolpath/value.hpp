@@ -84,4 +84,12 @@ inline bool iequals(std::string_view a, std::string_view b) {
   return true;
 }
 
+// `part` occurs in `text`, ignoring ASCII case.
+inline bool icontains(std::string_view text, std::string_view part) {
+  if (part.size() > text.size()) return false;
+  for (std::size_t i = 0; i + part.size() <= text.size(); ++i)
+    if (iequals(text.substr(i, part.size()), part)) return true;
+  return false;
+}
+
 }  // namespace toolpath

@@ -44,12 +44,6 @@ bool logical(const Command& c, std::string_view name) {
   return v->as_number() != 0;
 }
 
-bool contains_ci(std::string_view text, std::string_view part) {
-  return std::search(text.begin(), text.end(), part.begin(), part.end(), [](char a, char b) {
-           return toolpath::ascii_lower(a) == toolpath::ascii_lower(b);
-         }) != text.end();
-}
-
 // Commands without motion of their own (they only set variables, or write comments).
 bool silent(const Command& c) {
   for (std::string_view n : {"@start_of_file", "@def_tool", "@machine_plane", "@start_program", "@start_of_job",
@@ -250,9 +244,8 @@ private:
       throw std::runtime_error(fmt::format("command #{} @drill: verify models the cycle bases DRILLING, F_DRILL, PECK, "
                                            "TAPPING, BORING, R_BORING and F_BORING, not `{}`", c.index, name));
     dwell_ = 0;
-    if (cycle_ == "F_DRILL" || cycle_ == "F_BORING")  // the record's delay parameter, as the post writes it
-      for (const auto& p : c.parameters)
-        if (contains_ci(p.name, "delay") || contains_ci(p.name, "dwell")) dwell_ = p.value.as_number();
+    if (cycle_ == "F_DRILL" || cycle_ == "F_BORING")  // the record's dwell parameter, as the engine takes it
+      if (const auto dwell = record ? prp::dwell_parameter(*record) : std::nullopt) dwell_ = number_or(c, *dwell, 0.0);
     clearance_ = number_or(c, "drill_clearance_z", 0.0) * scale_;
     upper_ = number_or(c, "drill_upper_z", 0.0) * scale_;
     lower_ = number_or(c, "drill_lower_z", 0.0) * scale_;

@@ -8,13 +8,6 @@
 namespace prp {
 namespace {
 
-bool contains_ci(std::string_view text, std::string_view part) {
-  auto it = std::search(text.begin(), text.end(), part.begin(), part.end(), [](char a, char b) {
-    return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
-  });
-  return it != text.end();
-}
-
 // `file:line:column` of the cycle's name: a PRP line or a VMID <DrillCycle>'s GppName alike (a line
 // number alone means nothing in an XML file that may be one long line).
 std::string position(const toolpath::SourcePosition& where) {
@@ -80,14 +73,12 @@ void DrillExpansion::start_cycle(const toolpath::Command& drill) {
     if (!number(drill, level)) throw StreamError(drill, fmt::format("{}: the @drill has no {}", where, level));
   dwell_.reset();
   if (record->base == "F_DRILL" || record->base == "F_BORING") {
-    std::vector<std::string> dwell_params;
-    for (const auto& p : record->params)
-      if (contains_ci(p, "delay") || contains_ci(p, "dwell")) dwell_params.push_back(p);
-    if (dwell_params.size() != 1)
+    const std::optional<std::string> dwell = dwell_parameter(*record);
+    if (!dwell)
       throw StreamError(drill, where + " needs a dwell: its record must declare exactly one parameter whose name "
                                        "contains `delay` or `dwell`");
-    dwell_ = number(drill, dwell_params[0]);
-    if (!dwell_) throw StreamError(drill, fmt::format("{}: the @drill gives no value for `{}`", where, dwell_params[0]));
+    dwell_ = number(drill, *dwell);
+    if (!dwell_) throw StreamError(drill, fmt::format("{}: the @drill gives no value for `{}`", where, *dwell));
   }
   if (record->base == "PECK" && !(number(drill, "down_step").value_or(0) > 0))
     throw StreamError(drill, where + ": a peck cycle needs down_step > 0");

@@ -109,6 +109,16 @@ std::vector<const Record*> MachineParameters::records(std::string_view key) cons
   return out;
 }
 
+std::optional<std::string> dwell_parameter(const Record& record) {
+  std::optional<std::string> found;
+  for (const auto& p : record.params)
+    if (toolpath::icontains(p, "delay") || toolpath::icontains(p, "dwell")) {
+      if (found) return std::nullopt;
+      found = p;
+    }
+  return found;
+}
+
 const Record* MachineParameters::drill_cycle(std::string_view name) const {
   for (const Record& r : records_)
     if (r.key == "drill_type" && r.form == Record::Form::Cycle && toolpath::iequals(r.name, name)) return &r;
