@@ -109,4 +109,9 @@ double Cursor::number() {
   return v;
 }
 
+long long whole(double v, std::size_t column, std::string_view what) {
+  if (!(std::abs(v) <= 1e9)) throw BlockError{column, fmt::format("{} out of range", what)};
+  return static_cast<long long>(v);
+}
+
 }  // namespace ncmodel

@@ -36,4 +36,8 @@ struct Cursor {
   double number();
 };
 
+// A count, number or code as an integer; beyond a billion (or not a number) it is a BlockError at
+// `column`, never a conversion the language leaves undefined.
+long long whole(double v, std::size_t column, std::string_view what);
+
 }  // namespace ncmodel

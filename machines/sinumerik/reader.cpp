@@ -46,6 +46,7 @@ using ncmodel::ident_start;
 // A block that cannot be executed: the message names what and where (1-based column).
 using ncmodel::BlockError;
 using ncmodel::Cursor;
+using ncmodel::whole;
 
 // Words that change nothing the motion shows (smoothing, look-ahead, work offsets whose values the
 // program does not give): accepted without a word.
@@ -426,13 +427,13 @@ struct SinumerikReader::Impl {
       case 'F': b.f = k.value; return;
       case 'S': b.s = k.value; return;
       case 'D': b.d = k.value; return;
-      case 'T': b.tool_number = k.value; return;
-      case 'G': b.g.push_back(k.value); return;
-      case 'M': b.m.push_back(k.value); return;
+      case 'T': b.tool_number = static_cast<double>(whole(k.value, col, "tool number")); return;
+      case 'G': b.g.push_back(static_cast<double>(whole(std::round(k.value * 10), col, "G code")) / 10); return;
+      case 'M': b.m.push_back(static_cast<double>(whole(k.value, col, "M code"))); return;
       case 'H': return;  // auxiliary functions: not motion
       case 'N': return;  // a block number after the first word
       case 'P': b.p = k.value; b.p_column = col; return;
-      case 'L': b.call = Block::Call{fmt::format("L{}", static_cast<long long>(k.value)), 1, col}; return;
+      case 'L': b.call = Block::Call{fmt::format("L{}", whole(k.value, col, "program number")), 1, col}; return;
       default:
         warn_once(fmt::format("addr {}", letter), col, fmt::format("the address {} is not modelled: ignored", letter));
     }
@@ -442,7 +443,10 @@ struct SinumerikReader::Impl {
     if (name == "T") {  // T="NAME"
       c.skip();
       if (c.peek() == '"') b.tool_name = string_literal(c);
-      else b.tool_number = expression(c);
+      else {
+        const std::size_t at = c.column();
+        b.tool_number = static_cast<double>(whole(expression(c), at, "tool number"));
+      }
       return;
     }
     if (name == "CR") {

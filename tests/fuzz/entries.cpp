@@ -229,7 +229,7 @@ void sinumerik(std::string_view data) {
   // Never throws on a bad block (diagnostics instead); no folder, so subprogram calls are errors. A
   // GOTOB loop is bounded by the executed-block limit, kept low here.
   sinumerik::Options options;
-  options.max_executed_blocks = 100'000;
+  options.max_executed_blocks = 5'000;
   auto reader = sinumerik::SinumerikReader::from_string(std::string(data), "fuzz.mpf", options);
   toolpath::Command c;
   long commands = 0;
