@@ -124,6 +124,15 @@ struct ExternalVariable {
   toolpath::SourcePosition where;
 };
 
+// A rotary axis of the machine definition (a VMID's <Axis Type="1"> of its components) and its
+// travel in degrees. Linear axes are left out: their limits are machine coordinates, which a
+// program's work coordinates do not give.
+struct RotaryLimits {
+  char axis = 'A';  // A, B or C
+  double min = 0, max = 0;
+  toolpath::SourcePosition where;
+};
+
 class MachineParameters {
 public:
   Units units() const { return units_; }
@@ -156,6 +165,8 @@ public:
 
   // PRP external variables, each once, in declaration order.
   const std::vector<ExternalVariable>& external_variables() const { return externals_; }
+  // The rotary axes the machine definition limits (a VMID; a PRP says none), each once.
+  const std::vector<RotaryLimits>& rotary_limits() const { return rotary_limits_; }
 
 private:
   friend class Loader;
@@ -171,6 +182,7 @@ private:
   std::vector<UnknownKey> unknown_;
   std::vector<Diagnostic> warnings_;
   std::vector<ExternalVariable> externals_;
+  std::vector<RotaryLimits> rotary_limits_;
 };
 
 // Loads a machine file: a PRP (also the pre-2010 `.mac`), or a SolidCAM VMID, which is XML and

@@ -21,13 +21,11 @@
 
 #include "machines/registry/controller.hpp"
 #include "postproc/engine/engine.hpp"
+#include "prp/prp.hpp"
 #include "toolpath/command.hpp"
 #include "toolpath/diagnostic.hpp"
 #include "toolpath/geometry.hpp"
 
-namespace prp {
-class MachineParameters;
-}
 
 namespace postproc::verify {
 
@@ -158,7 +156,9 @@ class StateChecks {
 public:
   // `profile`: a planar_speeds machine (2XAxisCNC) moves only at speeds, with the spindle on or off:
   // the spindle and feed checks do not apply.
-  explicit StateChecks(const machines::VerifyProfile& profile) : planar_(profile.planar_speeds) {}
+  // `rotary`: the machine's rotary axes with their travel (prp::MachineParameters::rotary_limits).
+  explicit StateChecks(const machines::VerifyProfile& profile, std::vector<prp::RotaryLimits> rotary = {})
+      : rotary_(std::move(rotary)), planar_(profile.planar_speeds) {}
   void command(const toolpath::Command& c, std::size_t line);  // the model's commands, in order
   const std::vector<Finding>& findings() const { return findings_; }
   bool any_error() const;
@@ -166,7 +166,10 @@ public:
 private:
   void find(toolpath::Severity severity, std::size_t line, std::string what);
 
+  void rotary_travel(const toolpath::Command& c, std::size_t line);
+
   std::vector<Finding> findings_;
+  std::vector<prp::RotaryLimits> rotary_;
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
   std::optional<double> plunge_from_;  // the Z the last downward feed started from
   bool planar_ = false;

@@ -85,7 +85,7 @@ JobReport verify_job(const Engine& engine, const std::string& job, const Toleran
   CycleTime& time = report.cycle_time;
   time.tools.push_back({});
   double tool_start = 0;
-  StateChecks checks(profile);
+  StateChecks checks(profile, engine.machine(prp::Units::Metric).rotary_limits());
   auto observe = [&](const toolpath::Command& c, std::size_t line) {
     checks.command(c, line);
     const bool change = toolpath::iequals(c.name, "@change_tool") || toolpath::iequals(c.name, "@turn_change_tool");

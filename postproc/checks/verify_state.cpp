@@ -2,7 +2,8 @@
 // machine should, whatever the toolpath says. Errors make scrap: a feed move with the spindle
 // stopped, or at feed 0. Warnings are suspect: a rapid across X Y below the level the last plunge
 // started from, a tool change with the tool still down there, cutter compensation switched on or off
-// on an arc. Rotary-axis limits are not checked: no machine file says them.
+// on an arc. A rotary axis turned beyond the travel the machine file (a VMID) gives it is scrap: the
+// control stops with an overtravel alarm.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -32,8 +33,23 @@ bool StateChecks::any_error() const {
                      [](const Finding& f) { return f.severity == toolpath::Severity::Error; });
 }
 
+void StateChecks::rotary_travel(const toolpath::Command& c, std::size_t line) {
+  static constexpr std::array<std::string_view, 3> kRotary = {"apos", "bpos", "cpos"};
+  for (const prp::RotaryLimits& r : rotary_) {
+    const toolpath::Value* v = c.find(kRotary[static_cast<std::size_t>(r.axis - 'A')]);
+    if (!v || (v->kind != toolpath::ValueKind::Numeric && v->kind != toolpath::ValueKind::Integer)) continue;
+    const double a = v->as_number();
+    const bool below = a < r.min - kTolerance, above = a > r.max + kTolerance;
+    if (below || above)
+      find(toolpath::Severity::Error, line,
+           fmt::format("{} turned past its {} limit {:g} (travel {:g} .. {:g} in the machine file): an overtravel alarm",
+                       r.axis, below ? "lower" : "upper", below ? r.min : r.max, r.min, r.max));
+  }
+}
+
 void StateChecks::command(const toolpath::Command& c, std::size_t line) {
   using toolpath::Severity;
+  if (!rotary_.empty()) rotary_travel(c, line);
   if (is(c, "@start_tool")) spindle_on_ = true;
   if (is(c, "@stop_tool")) spindle_on_ = false;
   if (is(c, "@compensation")) compensation_changed_ = true;

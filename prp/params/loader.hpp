@@ -38,6 +38,8 @@ public:
   // Declares a PRP external variable once; an error (false) when it was declared with another type.
   bool declare(std::string_view name, VarType type, std::optional<toolpath::Value> initial, std::string_view by,
                toolpath::SourcePosition where);
+  // A rotary axis of the machine definition; a second one of the same name is ignored.
+  void add_rotary_limits(RotaryLimits limits);
   const std::string& file_name() const { return params_.file_; }
 
 private:

@@ -1,10 +1,13 @@
 // SolidCAM machine ID files (VMID, XML with the root <Machine>) read into the PRP model: mapped
 // controller attributes become PRP parameters, <DrillCycle>s drill_type records, <WireEdmMacro>s
 // wc_macro records, <UserDefParams>
-// PRP external variables. Everything else (kinematics, devices, simulation data) is skipped.
+// PRP external variables, the rotary axes' travel (RotaryLimits). Everything else (kinematics,
+// devices, simulation data) is skipped.
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include <fmt/format.h>
@@ -74,6 +77,7 @@ public:
       return loader_.error_at(at(root), fmt::format("expected the root element <Machine> of a SolidCAM VMID file, "
                                                     "found <{}>", root.name()));
     walk(root);
+    rotary_axes(root);
   }
 
 private:
@@ -115,6 +119,29 @@ private:
         if (child.type() == pugi::node_element && std::string_view(child.name()) != "Components")
           children.push_back(child);
       stack.insert(stack.end(), children.rbegin(), children.rend());
+    }
+  }
+
+  // The machine's rotary axes (<Axis Type="1"> anywhere in its components) and their travel.
+  void rotary_axes(pugi::xml_node root) {
+    std::vector<pugi::xml_node> stack{root};
+    while (!stack.empty()) {
+      pugi::xml_node node = stack.back();
+      stack.pop_back();
+      for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling())
+        if (child.type() == pugi::node_element) stack.push_back(child);  // popped in document order
+      if (std::string_view(node.name()) != "Axis" || std::string_view(node.attribute("Type").value()) != "1") continue;
+      const std::string_view name = node.attribute("Name").value();
+      if (name.size() != 1 || !std::strchr("ABCabc", name[0])) continue;  // a named spindle, a turret
+      const auto min = to_number(node.attribute("MinLim").value());
+      const auto max = to_number(node.attribute("MaxLim").value());
+      if (!min || !max || *min > *max) {
+        loader_.warning_at(at(node), fmt::format("rotary axis {}: MinLim and MaxLim are no range of degrees; its "
+                                                 "travel is not checked", name));
+        continue;
+      }
+      loader_.add_rotary_limits({static_cast<char>(std::toupper(static_cast<unsigned char>(name[0]))), *min, *max,
+                                 at(node)});
     }
   }
 
@@ -338,6 +365,12 @@ private:
 };
 
 }  // namespace
+
+void Loader::add_rotary_limits(RotaryLimits limits) {
+  for (const RotaryLimits& known : params_.rotary_limits_)
+    if (known.axis == limits.axis) return;
+  params_.rotary_limits_.push_back(std::move(limits));
+}
 
 MachineParameters Loader::run_vmid(std::string_view text) {
   VmidReader(*this, text).read();

@@ -1,6 +1,7 @@
 // SolidCAM machine ID files (VMID) read into the PRP model: the mapping table, user parameters of
 // every ValueType, drill cycles, precision and arc settings, skipped elements, and the positions of
 // errors (malformed XML, a bad value).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -308,6 +309,27 @@ TEST(VmidWarnings, UnknownCodesAreKeptWithAWarning) {
   EXPECT_EQ(p.drill_cycle("CYCLE85")->base, "NONE");
   EXPECT_EQ(external(p, "xNew")->initial->text, "a b");
   EXPECT_EQ(p.text("gen_procs"), "N");
+}
+
+// The travel of the rotary axes of the machine's components, for verify; linear axes (machine
+// coordinates) and other rotary devices are left out, the first axis of a name counts.
+TEST(Vmid, RotaryAxisLimits) {
+  auto p = prp::load_source(
+      "<Machine><Components><Component>\n"
+      "<Axis Name=\"X\" Type=\"0\" MinLim=\"-550\" MaxLim=\"550\"/>\n"
+      "<Axis Name=\"A\" Type=\"1\" MinLim=\"-120\" MaxLim=\"30\"/>\n"
+      "<Axis Name=\"a\" Type=\"1\" MinLim=\"-1\" MaxLim=\"1\"/>\n"
+      "<Axis Name=\"C\" Type=\"1\" MinLim=\"-100000\" MaxLim=\"100000\"/>\n"
+      "<Axis Name=\"S1\" Type=\"1\" MinLim=\"0\" MaxLim=\"360\"/>\n"
+      "<Axis Name=\"B\" Type=\"1\" MinLim=\"90\" MaxLim=\"-90\"/>\n"
+      "</Component></Components></Machine>",
+      "r.vmid", Units::Metric);
+  std::vector<std::string> got;
+  for (const auto& r : p.rotary_limits()) got.push_back(fmt::format("{} {:g} {:g} line {}", r.axis, r.min, r.max, r.where.line));
+  EXPECT_EQ(got, (std::vector<std::string>{"A -120 30 line 3", "C -100000 100000 line 5"}));
+  EXPECT_EQ(warnings(p), (std::vector<std::string>{"r.vmid:7:1: warning: rotary axis B: MinLim and MaxLim are no range of "
+                                                   "degrees; its travel is not checked"}));
+  EXPECT_TRUE(prp::defaults(Units::Metric).rotary_limits().empty());
 }
 
 }  // namespace

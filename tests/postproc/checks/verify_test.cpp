@@ -240,10 +240,15 @@ TEST(VerifyStateChecks, FindWhatMakesScrapOrIsSuspect) {
         cmd("@arc", {{"xpos", 1}, {"ypos", 1}, {"zpos", 0}, {"feed", 100}})},
        {"3: warning: cutter compensation switched on or off on an arc (controls want a line for it: Fanuc alarm "
         "PS0034) (1)"}},
+      {"A beyond its travel (the machine's A turns -120 .. 30), B not limited",
+       {cmd("@start_tool"), cmd("@rapid_move", {{"apos", 30}, {"bpos", 500}}), cmd("@line", {{"apos", -121}, {"feed", 100}}),
+        cmd("@rapid_move", {{"apos", 45}}), cmd("@rapid_move", {{"apos", 90}})},
+       {"3: error: A turned past its lower limit -120 (travel -120 .. 30 in the machine file): an overtravel alarm (1)",
+        "4: error: A turned past its upper limit 30 (travel -120 .. 30 in the machine file): an overtravel alarm (2)"}},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);
-    postproc::verify::StateChecks checks(machines::VerifyProfile{});
+    postproc::verify::StateChecks checks(machines::VerifyProfile{}, {prp::RotaryLimits{'A', -120, 30, {}}});
     for (std::size_t i = 0; i < c.program.size(); ++i) checks.command(c.program[i], i + 1);
     std::vector<std::string> got;
     for (const auto& f : checks.findings())
