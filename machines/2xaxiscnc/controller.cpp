@@ -25,6 +25,17 @@ void from_answers(const machines::ReadOptions& read, double& machine_speed, doub
   }
 }
 
+// The program has no loops: max_blocks has nothing to bound (scripts are files, not read from memory).
+Options reader_options(const machines::ReadOptions& read) {
+  Options options;
+  if (read.for_verify) {
+    double rapid = 1;
+    from_answers(read, options.machine_speed, rapid);
+    options.rapid_coefficient = 0;  // every frame a @line at its coefficient's feed
+  }
+  return options;
+}
+
 class TwoAxisCnc final : public machines::Controller {
 public:
   std::span<const std::string_view> names() const override {
@@ -38,13 +49,14 @@ public:
   std::unique_ptr<machines::ProgramSource> open(const std::string& path, std::string_view dialect,
                                                 const machines::ReadOptions& read, std::ostream& warnings) const override {
     (void)dialect;
-    Options options;
-    if (read.for_verify) {
-      double rapid = 1;
-      from_answers(read, options.machine_speed, rapid);
-      options.rapid_coefficient = 0;  // every frame a @line at its coefficient's feed
-    }
-    return std::make_unique<machines::ReportAtEnd<TwoAxisReader>>(TwoAxisReader::open(path, options), warnings);
+    return std::make_unique<machines::ReportAtEnd<TwoAxisReader>>(TwoAxisReader::open(path, reader_options(read)), warnings);
+  }
+  std::unique_ptr<machines::ProgramSource> open_text(std::string text, const std::string& name, std::string_view dialect,
+                                                     const machines::ReadOptions& read,
+                                                     std::ostream& warnings) const override {
+    (void)dialect;
+    return std::make_unique<machines::ReportAtEnd<TwoAxisReader>>(
+        TwoAxisReader::from_string(std::move(text), name, reader_options(read)), warnings);
   }
   machines::VerifyProfile verify_profile(const machines::ReadOptions& read) const override {
     machines::VerifyProfile p;

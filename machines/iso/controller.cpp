@@ -21,8 +21,14 @@ public:
   std::unique_ptr<machines::ProgramSource> open(const std::string& path, std::string_view dialect,
                                                 const machines::ReadOptions& read, std::ostream& warnings) const override {
     (void)dialect;
-    (void)read;
-    return std::make_unique<machines::ReportAtEnd<IsoReader>>(IsoReader::open(path, *rules_of(names_.front())), warnings);
+    return std::make_unique<machines::ReportAtEnd<IsoReader>>(IsoReader::open(path, rules(), reader_options(read)), warnings);
+  }
+  std::unique_ptr<machines::ProgramSource> open_text(std::string text, const std::string& name, std::string_view dialect,
+                                                     const machines::ReadOptions& read,
+                                                     std::ostream& warnings) const override {
+    (void)dialect;
+    return std::make_unique<machines::ReportAtEnd<IsoReader>>(
+        IsoReader::from_string(std::move(text), name, rules(), reader_options(read)), warnings);
   }
   machines::VerifyProfile verify_profile(const machines::ReadOptions& read) const override {
     (void)read;
@@ -40,6 +46,15 @@ public:
   }
 
 private:
+  const Rules& rules() const { return *rules_of(names_.front()); }
+  static Options reader_options(const machines::ReadOptions& read) {
+    Options options;
+    if (read.max_blocks) options.max_executed_blocks = read.max_blocks;
+    if (!read.tool_table.empty())
+      options.tools = std::make_shared<const ncmodel::ToolTable>(ncmodel::load_tool_table(read.tool_table));
+    return options;
+  }
+
   std::array<std::string_view, N> names_;
   std::string_view title_, summary_;
 };

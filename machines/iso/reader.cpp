@@ -41,6 +41,7 @@ constexpr Rules kRules[] = {
 
 using ncmodel::BlockError;
 using ncmodel::Cursor;
+using ncmodel::whole;
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -105,6 +106,11 @@ struct IsoReader::Impl {
   bool return_to_r = false;  // G99
   double feed = 0, speed = 0;
   std::optional<double> selected_tool;
+  // Tool length compensation, with a tool table: the length G43 applies (0: G49) less the length of
+  // the tool in the spindle is where the tip is below the programmed Z (docs/iso.md, "Tool table").
+  std::optional<std::int64_t> spindle_tool;  // none before the first M6: no length known
+  double applied_length = 0, spindle_length = 0;
+  double length_shift() const { return applied_length - spindle_length; }
   struct Cycle {
     double z = 0, r = 0, q = 0, p = 0;
     double initial = 0;
@@ -152,19 +158,15 @@ struct IsoReader::Impl {
   // the G92 and G52 shifts.
   Eigen::Vector3d g92 = Eigen::Vector3d::Zero(), g52 = Eigen::Vector3d::Zero();
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();
-  double to_work(int axis, double programmed) const { return programmed * unit() * scale[axis] + g92[axis] + g52[axis]; }
+  double to_work(int axis, double programmed) const {
+    return programmed * unit() * scale[axis] + g92[axis] + g52[axis] + (axis == 2 ? length_shift() : 0.0);
+  }
   double step(int axis, double programmed) const { return programmed * unit() * scale[axis]; }  // G91, I J K
   bool uniform_in(geo::Plane p) const { return scale[geo::axes(p).first] == scale[geo::axes(p).second]; }
 
   // ---------------------------------------------------------------- expressions (macro B)
 
 
-  // A count, number or code as an integer; beyond a billion (or not a number) it is an error, never a
-  // conversion the language leaves undefined.
-  static long long whole(double v, std::size_t column, std::string_view what) {
-    if (!(std::abs(v) <= 1e9)) throw BlockError{column, fmt::format("{} out of range", what)};
-    return static_cast<long long>(v);
-  }
 
 
 
@@ -596,7 +598,7 @@ struct IsoReader::Impl {
       if (x.letter == 'M') m_codes.push_back(&x);
     }
     if (const Word* f = find(w, 'F')) feed = f->value * unit();
-    if (const Word* t = find(w, 'T')) selected_tool = t->value;
+    if (const Word* t = find(w, 'T')) selected_tool = static_cast<double>(whole(t->value, t->column, "tool number"));
     bool dwell = false, machine = false, motion_given = false;
     enum class Shift { None, G92, G52, Scale } shift = Shift::None;
     std::optional<int> new_cycle;
@@ -634,8 +636,10 @@ struct IsoReader::Impl {
             throw BlockError{g->column, fmt::format("{} has no canned cycles (G{:g})", rules.title, g->value)};
           new_cycle = static_cast<int>(code / 10);
           break;
+        case 430: tool_length(w, g->column); break;
+        case 490: applied_length = 0; break;
         // modes whose values the program does not give, and path modes: nothing to move
-        case 430: case 431: case 490: case 540: case 550: case 560: case 570: case 580: case 590: case 610:
+        case 540: case 550: case 560: case 570: case 580: case 590: case 610:
         case 640: case 930: case 940: case 960: case 970: case 150: case 160:
           break;
         case 950:  // feed per revolution: passed on as written, the model has no spindle speed for it
@@ -654,6 +658,7 @@ struct IsoReader::Impl {
       if (code == 6) {
         if (!rules.tool_change) throw BlockError{m->column, fmt::format("{} has no tool changer (M6: error 20, unsupported command)", rules.title)};
         out.tool_change(selected_tool, std::nullopt);
+        load_tool(m->column);
       }
     }
     if (const Word* s = find(w, 'S')) speed = s->value;
@@ -674,7 +679,8 @@ struct IsoReader::Impl {
       out.dwell(seconds);
     } else if (shift == Shift::G92) {  // the position, as the program will name it from now on
       for (int a = 0; a < 3; ++a)
-        if (const Word* x = find(w, "XYZ"[a])) g92[a] = out.position()[a] - x->value * unit() * scale[a] - g52[a];
+        if (const Word* x = find(w, "XYZ"[a]))
+          g92[a] = out.position()[a] - x->value * unit() * scale[a] - g52[a] - (a == 2 ? length_shift() : 0.0);
     } else if (shift == Shift::G52) {  // a local shift of the work frame; G52 X0 Y0 Z0 cancels it
       for (int a = 0; a < 3; ++a)
         if (const Word* x = find(w, "XYZ"[a])) g52[a] = x->value * unit();
@@ -710,6 +716,31 @@ struct IsoReader::Impl {
       }
     }
     flow(w, m_codes);
+  }
+
+  // G43 [H<n>]: the length of tool n (H0: none; no H: the tool in the spindle, as LinuxCNC takes
+  // it) applies from this block on.
+  void tool_length(const std::vector<Word>& w, std::size_t column) {
+    if (!options.tools) return;
+    const Word* h = find(w, 'H');
+    if (!h && !spindle_tool) throw BlockError{column, "G43 without H before any M6: which tool's length applies?"};
+    const std::int64_t number = h ? whole(h->value, h->column, "H number") : *spindle_tool;
+    applied_length = number == 0 ? 0.0 : table_length(number, h ? h->column : column, 'H');
+  }
+
+  // M6: the selected tool is in the spindle; its length decides where its tip is.
+  void load_tool(std::size_t column) {
+    if (!options.tools || !selected_tool) return;
+    const auto tool = static_cast<std::int64_t>(*selected_tool);
+    spindle_length = tool == 0 ? 0.0 : table_length(tool, column, 'T');
+    spindle_tool = tool;
+  }
+
+  double table_length(std::int64_t number, std::size_t column, char word) const {
+    const ncmodel::ToolOffsets* t = options.tools->find(number);
+    if (!t) throw BlockError{column, fmt::format("{}{}: tool {} is not in the tool table {}", word, number, number,
+                                                 options.tools->file)};
+    return t->length * unit();
   }
 
   Eigen::Vector3d target(const std::vector<Word>& w) const {

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "machines/ncmodel/tool_table.hpp"
 #include "toolpath/command.hpp"
 #include "toolpath/diagnostic.hpp"
 #include "toolpath/source.hpp"
@@ -36,6 +37,9 @@ struct Rules {
 const Rules* rules_of(std::string_view dialect);
 
 struct Options {
+  // The control's tool table: with one, G43 H applies tool lengths and positions are the tool tip's
+  // (docs/iso.md, "Tool table"); without, positions are as programmed.
+  std::shared_ptr<const ncmodel::ToolTable> tools;
   std::size_t max_executed_blocks = 100'000'000;  // a runaway loop stops here, with an error
   std::size_t max_call_depth = 16;
   std::size_t max_diagnostics = 1000;

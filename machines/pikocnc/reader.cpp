@@ -1,6 +1,7 @@
 #include "machines/pikocnc/reader.hpp"
 
 #include <fstream>
+#include <sstream>
 #include <initializer_list>
 #include <utility>
 
@@ -18,6 +19,13 @@ std::unique_ptr<PikoReader> PikoReader::open(const std::string& path, Options op
   if (!*file) throw toolpath::InputError({path, 0, 0}, "cannot open file");
   auto reader = std::make_unique<PikoReader>(*file, path, std::move(options));
   reader->owned_ = std::move(file);
+  return reader;
+}
+
+std::unique_ptr<PikoReader> PikoReader::from_string(std::string text, std::string file_name, Options options) {
+  auto in = std::make_unique<std::istringstream>(std::move(text));
+  auto reader = std::make_unique<PikoReader>(*in, std::move(file_name), std::move(options));
+  reader->owned_ = std::move(in);
   return reader;
 }
 

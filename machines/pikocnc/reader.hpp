@@ -24,6 +24,8 @@ public:
   ~PikoReader() override;
   // Opens a file; throws toolpath::InputError when it cannot be read.
   static std::unique_ptr<PikoReader> open(const std::string& path, Options options = {});
+  // A program held in memory; the reader keeps its own copy.
+  static std::unique_ptr<PikoReader> from_string(std::string text, std::string file_name, Options options = {});
 
   // Throws toolpath::InputError (file:line:column) on an error in the program.
   bool next(toolpath::Command& out) override;

@@ -22,6 +22,12 @@ struct ReadOptions {
   bool nc_lines_in_trace = false;
   // Read for `verify`: the programmed path (no cutter compensation), comments are no commands.
   bool for_verify = false;
+  // A runaway loop stops after this many blocks executed (0: the model's own bound, in the hundred
+  // millions); the fuzz target keeps it low so that one input runs in milliseconds.
+  std::size_t max_blocks = 0;
+  // The control's tool table (a file in LinuxCNC's format, machines/ncmodel/tool_table.hpp), for
+  // the models that apply tool lengths; empty: none.
+  std::string tool_table;
   // The post's `input` answers of the run (NAME, VALUE): a controller whose program depends on the
   // application's settings (2XAxisCNC's machine speed) takes them from there.
   std::vector<std::pair<std::string, std::string>> answers;
@@ -66,6 +72,11 @@ public:
   // cannot be read.
   virtual std::unique_ptr<ProgramSource> open(const std::string& path, std::string_view dialect,
                                               const ReadOptions& options, std::ostream& warnings) const = 0;
+  // The same for a program held in memory, `name` in its messages. Nothing is looked up beside it
+  // (subprogram and script files): there is no folder. Every controller is fuzzed through this
+  // (tests/fuzz/, target `controllers`), so a new one is fuzzed from its registry line on.
+  virtual std::unique_ptr<ProgramSource> open_text(std::string text, const std::string& name, std::string_view dialect,
+                                                   const ReadOptions& options, std::ostream& warnings) const = 0;
   virtual VerifyProfile verify_profile(const ReadOptions& options) const {
     (void)options;
     return {};

@@ -9,6 +9,12 @@
 namespace sinumerik {
 namespace {
 
+Options reader_options(const machines::ReadOptions& read) {
+  Options options;
+  if (read.max_blocks) options.max_executed_blocks = read.max_blocks;
+  return options;
+}
+
 class Sinumerik final : public machines::Controller {
 public:
   std::span<const std::string_view> names() const override {
@@ -23,8 +29,14 @@ public:
   std::unique_ptr<machines::ProgramSource> open(const std::string& path, std::string_view dialect,
                                                 const machines::ReadOptions& read, std::ostream& warnings) const override {
     (void)dialect;
-    (void)read;
-    return std::make_unique<machines::ReportAtEnd<SinumerikReader>>(SinumerikReader::open(path), warnings);
+    return std::make_unique<machines::ReportAtEnd<SinumerikReader>>(SinumerikReader::open(path, reader_options(read)), warnings);
+  }
+  std::unique_ptr<machines::ProgramSource> open_text(std::string text, const std::string& name, std::string_view dialect,
+                                                     const machines::ReadOptions& read,
+                                                     std::ostream& warnings) const override {
+    (void)dialect;
+    return std::make_unique<machines::ReportAtEnd<SinumerikReader>>(
+        SinumerikReader::from_string(std::move(text), name, reader_options(read)), warnings);
   }
   bool write_sample_program(std::ostream& out, std::size_t blocks) const override {
     out << "; BENCHMARK\nG71 G90 G17\nT1 M6\nS12000 M3\nG0 X0 Y0 Z5\n";

@@ -174,7 +174,7 @@ int run_plot(const Arguments& args, std::ostream& out, std::ostream& err) {
   const std::string& input = args.positional()[0];
   const std::string output = args.value("--output");
   if (output.empty()) throw UsageError{"-o FILE.svg is required"};
-  auto source = open_source(input, args.value("--dialect", default_dialect(input)), err);
+  auto source = open_source(input, args.value("--dialect", default_dialect(input)), err, read_options(args));
   Plotter plot;
   toolpath::Command c;
   while (source->next(c)) plot.command(c);
@@ -193,6 +193,7 @@ Subcommand plot_command() {
       {
           {"--output", "-o", true, "the SVG file to write (written to a temporary name, then renamed)"},
           {"--dialect", "", true, plot_dialect_help()},
+          kToolTableOption,
       },
       run_plot,
   };

@@ -16,7 +16,7 @@
 namespace postproc::cli {
 
 std::unique_ptr<toolpath::CommandSource> open_source(const std::string& path, const std::string& dialect,
-                                                     std::ostream& warnings, bool nc_lines) {
+                                                     std::ostream& warnings, const machines::ReadOptions& options) {
   if (dialect == "trace") {
     struct Checked final : toolpath::CommandSource {  // catalogue types checked where they are read
       std::unique_ptr<toolpath::TraceReader> reader;
@@ -32,9 +32,14 @@ std::unique_ptr<toolpath::CommandSource> open_source(const std::string& path, co
   const machines::Controller* controller = machines::find_controller(dialect);
   if (!controller)
     throw UsageError{"unknown dialect `" + dialect + "` (known: trace, " + machines::controller_names() + ")"};
-  machines::ReadOptions options;
-  options.nc_lines_in_trace = nc_lines;
   return controller->open(path, dialect, options, warnings);
+}
+
+machines::ReadOptions read_options(const Arguments& args) {
+  machines::ReadOptions options;
+  options.nc_lines_in_trace = args.has("--nc-lines");
+  if (args.has("--tool-table")) options.tool_table = args.value("--tool-table");
+  return options;
 }
 
 std::string dialect_help(std::string_view what) {
@@ -50,7 +55,7 @@ namespace {
 
 int run_read(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (args.positional().size() != 1) throw UsageError{"expected one input file"};
-  auto reader = open_source(args.positional()[0], args.value("--dialect", "trace"), err, args.has("--nc-lines"));
+  auto reader = open_source(args.positional()[0], args.value("--dialect", "trace"), err, read_options(args));
   toolpath::Command command;
   if (args.has("--summary")) {
     std::map<std::string, std::size_t> counts;
@@ -81,6 +86,7 @@ Subcommand read_command() {
           {"--dialect", "", true, input_help()},
           {"--summary", "", false, "print the number of commands of each kind instead"},
           {"--nc-lines", "", false, "G-code input: attach each NC line to the first command it produced"},
+          kToolTableOption,
       },
       run_read,
   };

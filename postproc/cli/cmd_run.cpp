@@ -39,7 +39,7 @@ int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
     summary = engine.run(*input.reader, files, options);
   } else {
     // NC code read back by a controller model: its motion is posted again (closing the loop).
-    auto source = open_source(args.positional()[0], dialect, err);
+    auto source = open_source(args.positional()[0], dialect, err, read_options(args));
     RunOptions options;
     options.input_name = args.positional()[0];
     options.main_path = main_path;
@@ -65,6 +65,7 @@ Subcommand run_command() {
   std::vector<OptionSpec> options = engine_option_specs();
   options.push_back({"-o", "", true, "output: - (stdout, the default), a folder, or the main file"});
   options.push_back({"--dialect", "", true, input_help()});
+  options.push_back(kToolTableOption);
   options.push_back({"--crlf", "", false, "end lines with CR LF (as SolidCAM on Windows) instead of LF"});
   options.push_back({"--quiet", "-q", false, "no progress bar, no summary and no `input` log lines"});
   return {

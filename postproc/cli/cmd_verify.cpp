@@ -9,6 +9,7 @@
 #include "machines/registry/registry.hpp"
 #include "postproc/cli/cli.hpp"
 #include "postproc/cli/cli_support.hpp"
+#include "postproc/cli/open_input.hpp"
 #include "postproc/checks/verify.hpp"
 #include "toolpath/value.hpp"
 
@@ -34,8 +35,8 @@ const machines::Controller& verify_controller(const std::string& dialect) {
   throw UsageError{"verify knows the controllers " + machines::controller_names() + ", not `" + dialect + "`"};
 }
 
-machines::ReadOptions read_options(const EngineOptions& engine) {
-  machines::ReadOptions read;
+machines::ReadOptions verify_read_options(const Arguments& args, const EngineOptions& engine) {
+  machines::ReadOptions read = read_options(args);
   for (const auto& a : engine.answers) read.answers.emplace_back(a.name, a.value);
   return read;
 }
@@ -64,7 +65,7 @@ int run_verify(const Arguments& args, std::ostream& out, std::ostream& err) {
   Engine engine(engine_opts);
   print_machine_warnings(engine, err);  // before posting, as `run` does
   verify::JobReport report = verify::verify_job(engine, job, tolerances, keep, controller, dialect,
-                                                read_options(engine_opts), &err);
+                                                verify_read_options(args, engine_opts), &err);
   const auto& r = report.result;
   // Say which controller model read the NC: a post for another controller is not verified by it.
   const std::string model = fmt::format("the {} model (--dialect {})", controller.title(), dialect);
@@ -104,6 +105,7 @@ Subcommand verify_command() {
   options.push_back({"--nc", "", true, "also write the NC program that was read back to this file"});
   options.push_back({"--quiet", "-q", false, "print nothing when the motion matches"});
   options.push_back({"--dialect", "", true, verify_dialect_help()});
+  options.push_back(kToolTableOption);
   return {
       "verify",
       "postproc verify --post P.gpp [--prp P.prp] [--dialect NAME] [--tolerance MM] [--nc FILE] JOB.trace",

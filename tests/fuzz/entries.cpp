@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <streambuf>
 #include <string>
@@ -16,6 +17,7 @@
 #include "machines/2xaxiscnc/reader.hpp"
 #include "machines/iso/reader.hpp"
 #include "machines/pikocnc/reader.hpp"
+#include "machines/registry/registry.hpp"
 #include "machines/sinumerik/reader.hpp"
 #include "machines/pikocnc/script/script.hpp"
 #include "postproc/engine/engine.hpp"
@@ -238,17 +240,47 @@ void sinumerik(std::string_view data) {
 }
 
 void iso(std::string_view data) {
-  // The first byte picks the dialect (Fanuc, LinuxCNC, Mach3, GRBL); never throws on a bad block.
-  // Loops (WHILE, repeat, M98 L) are bounded by the executed-block limit, kept low here.
+  // The first byte picks the dialect (Fanuc, LinuxCNC, Mach3, GRBL) and whether a tool table
+  // applies G43 H; never throws on a bad block. Loops (WHILE, repeat, M98 L) are bounded by the
+  // executed-block limit, kept low here.
   static constexpr std::string_view kDialects[] = {"fanuc", "linuxcnc", "mach3", "grbl"};
-  const iso::Rules& rules = *iso::rules_of(kDialects[data.empty() ? 0 : static_cast<unsigned char>(data[0]) % 4]);
+  static const auto kTools = std::make_shared<const ncmodel::ToolTable>(
+      ncmodel::parse_tool_table("T1 Z100\nT2 Z80.5 D6\nT3 Z-20\n", "fuzz.tbl"));
+  const unsigned first = data.empty() ? 0u : static_cast<unsigned char>(data[0]);
+  const iso::Rules& rules = *iso::rules_of(kDialects[first % 4]);
   iso::Options options;
+  if (first & 4) options.tools = kTools;
   options.max_executed_blocks = 5'000;
   auto reader = iso::IsoReader::from_string(std::string(data), "fuzz.nc", rules, options);
   toolpath::Command c;
   long commands = 0;
   while (reader->next(c))
     if (++commands > 5'000'000) broken("an ISO program of bounded size gave more than five million commands");
+}
+
+void controllers(std::string_view data) {
+  // Byte 1 picks a controller of the registry, byte 2 one of its names (a dialect variant) and how
+  // it reads (for verify, NC lines); the rest is the program, read to its end with few blocks
+  // executed. An error in the program is an InputError when the stream ends: no finding.
+  if (data.size() < 2) return;
+  const auto all = machines::controllers();
+  const machines::Controller& controller = *all[static_cast<unsigned char>(data[0]) % all.size()];
+  const unsigned how = static_cast<unsigned char>(data[1]);
+  machines::ReadOptions options;
+  options.max_blocks = 5'000;
+  options.for_verify = (how & 0x80) != 0;
+  options.nc_lines_in_trace = (how & 0x40) != 0;
+  const auto names = controller.names();
+  std::ostringstream warnings;
+  try {
+    auto source = controller.open_text(std::string(data.substr(2)), "fuzz.nc", names[(how & 0x3f) % names.size()],
+                                       options, warnings);
+    toolpath::Command c;
+    long commands = 0;
+    while (source->next(c))
+      if (++commands > 5'000'000) broken("a program of bounded size gave more than five million commands");
+  } catch (const toolpath::InputError&) {
+  }
 }
 
 void pikocnc_script(std::string_view data) {
@@ -293,7 +325,7 @@ Entry entry(std::string_view target) {
       {"trace_reader", trace_reader}, {"gppl_check", gppl_check}, {"gppl_run", gppl_run},
       {"display_format", display_format}, {"prp_loader", prp_loader}, {"pikocnc", pikocnc},
       {"vmid", vmid}, {"twoaxis", twoaxis}, {"pikocnc_script", pikocnc_script}, {"sinumerik", sinumerik},
-      {"iso", iso},
+      {"iso", iso}, {"controllers", controllers},
   };
   for (const Named& n : kEntries)
     if (n.name == target) return n.entry;

@@ -19,6 +19,7 @@ void vmid(std::string_view data);            // load a VMID machine file (XML) l
 void twoaxis(std::string_view data);         // read a 2XAxisCNC program back into stream commands
 void sinumerik(std::string_view data);       // read a Sinumerik program back into stream commands
 void iso(std::string_view data);             // read a Fanuc/LinuxCNC/Mach3/GRBL program (first byte: which)
+void controllers(std::string_view data);     // every registered controller's reader (bytes 1-2: which, how)
 void pikocnc_script(std::string_view data);  // parse, check and run a PikoCNC script, bounded, output discarded
 
 // The entry of a target by name (the folder names under regressions/); nullptr when unknown.

@@ -1,11 +1,13 @@
 // Golden folders under machines/iso/golden/<case>/: `program.nc`, read with the dialect named in
 // `dialect`, is printed in the canonical trace form, which must equal `expected.trace`; every
-// diagnostic (`line:col: severity: text`) must equal `expected.diagnostics` (absent: none).
+// diagnostic (`line:col: severity: text`) must equal `expected.diagnostics` (absent: none). A
+// `tool.tbl` beside the program is the control's tool table.
 // POSTPROC_UPDATE_GOLDEN=1 rewrites the expected files (review them before committing).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -31,7 +33,10 @@ TEST_P(Golden, ReadsBackAsExpected) {
   dialect_file >> dialect;
   const iso::Rules* rules = iso::rules_of(dialect);
   ASSERT_NE(rules, nullptr) << dir / "dialect" << ": " << dialect;
-  auto reader = iso::IsoReader::open((dir / "program.nc").string(), *rules);
+  iso::Options options;
+  if (fs::exists(dir / "tool.tbl"))
+    options.tools = std::make_shared<const ncmodel::ToolTable>(ncmodel::load_tool_table((dir / "tool.tbl").string()));
+  auto reader = iso::IsoReader::open((dir / "program.nc").string(), *rules, options);
   std::ostringstream trace;
   toolpath::TraceWriter writer(trace);
   toolpath::Command c;

@@ -326,6 +326,33 @@ TEST(VerifyCli, PostThatTurnsArcsTheWrongWayIsCaughtAtTheFirstArc) {
             "  NC read by the PikoCNC model (--dialect pikocnc)\n");
 }
 
+// With the control's tool table the Fanuc model applies G43 H: a post whose H is not the tool's
+// puts the tip where the toolpath does not, and verify says where.
+TEST(VerifyCli, ToolTableCatchesTheWrongLengthOffset) {
+  const std::vector<std::string> common{"--prp", "../machines/fanuc/fanuc.prp", "--dialect", "fanuc", "--tool-table",
+                                        "postproc/checks/data/sample-tools.tbl", "../docs/examples/sample-job.trace"};
+  std::vector<std::string> args{"verify", "--post", "../machines/fanuc/fanuc.gpp"};
+  args.insert(args.end(), common.begin(), common.end());
+  auto r = run(args);
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+
+  std::string post = slurp("../machines/fanuc/fanuc.gpp");
+  const std::string right = "' H', tool_number}", wrong = "' H3'}";
+  const auto at = post.find(right);
+  ASSERT_NE(at, std::string::npos);
+  post.replace(at, right.size(), wrong);
+  const auto dir = std::filesystem::temp_directory_path() / "postproc-verify-tool-table";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "fanuc.gpp", std::ios::binary) << post;
+  args = {"verify", "--post", (dir / "fanuc.gpp").string()};
+  args.insert(args.end(), common.begin(), common.end());
+  r = run(args);
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.out.find("NC:       SAMPLE.NC:20: N180 G43 Z50. H3"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("actual   rapid to X10.0000 Y15.0000 Z65.2500"), std::string::npos) << r.out;
+}
+
 // Closing the loop the other way: PikoCNC G-code read back and posted through the Fanuc post.
 TEST(RunDialect, PikoCncProgramPostedAgainThroughTheFanucPost) {
   auto r = run({"run", "--dialect", "pikocnc", "golden/pikocnc/sample-job/SAMPLE.NC", "--post",
