@@ -72,6 +72,8 @@ struct HostVariable {
   std::vector<int> dimensions;  // empty for scalars; 1-based sizes for host arrays (chng_cond<<3,n>>)
 };
 
+struct SymbolIndex;  // gppl/symbols.hpp
+
 struct CompileOptions {
   std::vector<HostVariable> host_variables;
   // Real posts read command parameters the host may not list. When true, an identifier that is
@@ -88,6 +90,9 @@ struct CompileOptions {
   // it when the line runs: a display format into a format variable (`xpos_f = '5.3p'`: error 423,
   // with the spelling meant), a number into a text variable (394), text into a number (386).
   bool check_constant_assignments = false;
+  // An editor's index of the post's names (gppl/symbols.hpp), filled by the compile, also by one
+  // that fails. Null: none is kept.
+  SymbolIndex* symbols = nullptr;
 };
 
 class Program;  // parsed, resolved, immutable; shareable between interpreters
@@ -101,6 +106,8 @@ bool uses_line_functions(const Program& program);
 
 // Warnings found while compiling (implicit host variables, ...), "file:line:col: warning: text".
 const std::vector<std::string>& warnings(const Program& program);
+// The same warnings with their positions (number 0), for a host that reports them in its own shape.
+const std::vector<Error>& warning_details(const Program& program);
 
 // The procedures a post defines, in the order written, and whether a `call` statement names them.
 struct ProcedureInfo {

@@ -33,6 +33,7 @@ std::shared_ptr<const Program> compile_source(std::string_view text, const std::
 }
 
 const std::vector<std::string>& warnings(const Program& program) { return program.warnings; }
+const std::vector<Error>& warning_details(const Program& program) { return program.warning_details; }
 
 std::vector<ProcedureInfo> procedures(const Program& program) {
   std::vector<ProcedureInfo> out;

@@ -168,6 +168,7 @@ public:
   SystemSlots slots{};
   bool uses_line_functions = false;  // start_line/end_line appear: the sink's structure hooks are called
   std::vector<std::string> warnings;
+  std::vector<Error> warning_details;  // the same, with positions
   // Per ref with indices == kUndeclared: where the name stands and the error a use of it is
   // before the host has assigned it (383 read, 404 assigned), the diagnostic `check` gives.
   struct Undeclared {

@@ -150,6 +150,7 @@ void Compiler::compile_line(const ParsedLine& line, Context& ctx, std::vector<Bl
       }
       Procedure& callee = program_->procedures[it->second];
       callee.called = true;
+      record(SymbolOf::Procedure, it->second, 0, node_pos(name, ctx.file), name.string_view().size(), false);
       std::vector<std::uint32_t> args;
       if (st.children.size() > 1) {
         for (const auto& arg : st.children[1]->children) {
@@ -384,6 +385,7 @@ std::uint32_t Compiler::reference(const SyntaxNode& variable, Context& ctx, bool
   VarRef ref;
   const std::vector<int>* dims = nullptr;
   std::optional<Program::Undeclared> undeclared;
+  bool resolved = true;  // false after an error: `ref` names nothing
   const auto& locals = procedure_sources_[ctx.procedure].locals;
   if (auto it = locals.find(lower(name)); it != locals.end()) {
     const LocalVariable& l = program_->procedures[ctx.procedure].locals[it->second];
@@ -392,9 +394,11 @@ std::uint32_t Compiler::reference(const SyntaxNode& variable, Context& ctx, bool
   } else if (auto g = lookup_global(name); g && program_->globals[*g].group != Group::Implicit) {
     ref = VarRef{false, *g, program_->globals[*g].first_cell, kNone, 0};
   } else if (find_function(name) != nullptr) {
+    resolved = false;
     error(target ? ErrorCode::InvalidAssignment : ErrorCode::NotDefined, pos, name,
           "a built-in function cannot be used as a variable");
   } else if (line_function_named(name)) {
+    resolved = false;
     error(target ? ErrorCode::InvalidAssignment : ErrorCode::NotDefined, pos, name,
           "start_line and end_line are allowed only as items of a generate statement, as in {' N1=' start_line}");
   } else if (options_.implicit_host_variables) {
@@ -420,8 +424,10 @@ std::uint32_t Compiler::reference(const SyntaxNode& variable, Context& ctx, bool
         warn(pos, fmt::format("'{}' is not declared: treated as a host variable", name));
     }
   } else {
+    resolved = false;
     error(target ? ErrorCode::DoesNotExist : ErrorCode::NotDefined, pos, name, did_you_mean(name, ctx));
   }
+  if (resolved) record(ref.local ? SymbolOf::Local : SymbolOf::Global, ref.id, ctx.procedure, pos, name.size(), false);
   if (!ref.local) dims = &program_->globals[ref.id].dimensions;
   // Counted now: an index expression may declare an implicit global, moving the globals (and dims).
   const std::size_t dim_count = dims->size();

@@ -11,6 +11,7 @@
 #include <iterator>
 
 #include "gppl/error_codes.hpp"
+#include "gppl/symbols.hpp"
 #include "gppl/compile/grammar.hpp"
 
 namespace gppl {
@@ -71,6 +72,55 @@ void Compiler::error(ErrorCode code, SourcePos pos, std::string_view name, std::
 void Compiler::warn(SourcePos pos, std::string_view text) {
   const Position p = program_->position(pos);
   program_->warnings.push_back(fmt::format("{}:{}:{}: warning: {}", p.file, p.line, p.column, text));
+  program_->warning_details.emplace_back(0, p, std::string(text));
+}
+
+void Compiler::record(SymbolOf of, std::uint32_t id, std::uint32_t procedure, SourcePos pos, std::size_t length,
+                      bool declaration) {
+  SymbolIndex* index = options_.symbols;
+  if (!index) return;
+  std::uint32_t owner = 0;  // a local's procedure
+  if (of == SymbolOf::Local) {
+    const auto it = symbol_ids_.find(std::uint64_t(SymbolOf::Procedure) << 62 | procedure);
+    if (it == symbol_ids_.end()) return;  // a procedure whose header did not parse
+    owner = it->second;
+  }
+  while (index->files.size() < program_->files.size()) index->files.push_back(program_->files[index->files.size()]);
+  const std::uint64_t key = (std::uint64_t(of) << 62) | (std::uint64_t(of == SymbolOf::Local ? procedure : 0) << 32) | id;
+  auto [it, added] = symbol_ids_.emplace(key, std::uint32_t(index->symbols.size()));
+  if (added) {
+    Symbol s;
+    s.where = program_->position(pos);
+    s.declared = declaration;
+    if (of == SymbolOf::Procedure) {
+      s.kind = SymbolKind::Procedure;
+      s.name = program_->procedures[id].name;
+    } else if (of == SymbolOf::Local) {
+      const LocalVariable& l = program_->procedures[procedure].locals[id];
+      s.kind = SymbolKind::Local;
+      s.name = l.name;
+      s.type = l.type;
+      s.dimensions = l.dimensions;
+      s.procedure = owner;
+    } else {
+      const GlobalVariable& g = program_->globals[id];
+      s.kind = g.group == Group::System ? SymbolKind::System
+               : g.group == Group::Global ? SymbolKind::Global
+                                          : SymbolKind::Host;
+      s.name = g.name;
+      s.type = g.type;
+      s.dimensions = g.dimensions;
+      if (g.group == Group::Global) {  // its declaration, wherever the first use is
+        s.where = program_->position(g.declared);
+        s.declared = true;
+      }
+    }
+    index->symbols.push_back(std::move(s));
+  } else if (declaration && !index->symbols[it->second].declared) {
+    index->symbols[it->second].where = program_->position(pos);
+    index->symbols[it->second].declared = true;
+  }
+  index->uses.push_back({it->second, pos.file, pos.line, pos.column, std::uint32_t(length), declaration});
 }
 
 std::uint32_t Compiler::add_global(GlobalVariable v) {
@@ -198,8 +248,13 @@ void Compiler::start_procedure(ParsedLine& header, std::uint32_t file) {
   } else {
     proc.defined = false;  // a broken header: its body is still read so that ENDP pairs up
   }
+  const bool named = source.header != nullptr;
   program_->procedures.push_back(std::move(proc));
   procedure_sources_.push_back(std::move(source));
+  if (named) {
+    const auto id = std::uint32_t(program_->procedures.size() - 1);
+    record(SymbolOf::Procedure, id, 0, program_->procedures[id].pos, program_->procedures[id].name.size(), true);
+  }
 }
 
 void Compiler::load_include(const ParsedLine& line, const SourceText& from, int depth) {

@@ -55,6 +55,11 @@ private:
   void declare_local(std::uint32_t procedure, std::string_view name, Type type, std::vector<int> dims,
                      SourcePos pos, ErrorCode redefined);
   void error(ErrorCode code, SourcePos pos, std::string_view name = {}, std::string_view detail = {});
+  // The editor's index (CompileOptions::symbols): a declaration or use of a global (by id), a local
+  // (procedure, index) or a procedure (id) at `pos`, `length` bytes long.
+  enum class SymbolOf : std::uint8_t { Global, Local, Procedure };
+  void record(SymbolOf of, std::uint32_t id, std::uint32_t procedure, SourcePos pos, std::size_t length,
+              bool declaration);
   void warn(SourcePos pos, std::string_view text);
 
   // codegen.cpp: statements, expressions, generate
@@ -91,6 +96,7 @@ private:
   std::unordered_map<std::string, std::uint32_t> globals_;     // lower-case name -> GlobalVariable
   std::unordered_map<std::string, std::uint32_t> procedures_;  // lower-case name -> Procedure
   std::unordered_map<std::string, SourcePos> local_names_;     // any procedure's locals, first declaration
+  std::unordered_map<std::uint64_t, std::uint32_t> symbol_ids_;  // (SymbolOf, procedure, id) -> symbols
 };
 
 // start_line / end_line (case-insensitive): names reserved for the host item functions.

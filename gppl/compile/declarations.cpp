@@ -181,6 +181,8 @@ void Compiler::declare(const ParsedLine& line, std::uint32_t procedure) {
         error(ErrorCode::SystemDeclared, pos, g.name,
               fmt::format("it is {}{}, declared here as {}{}", name_of(g.type), g.dimensions.empty() ? "" : " array",
                           name_of(type), dims.empty() ? "" : " array"));
+      } else {
+        record(SymbolOf::Global, existing->second, 0, pos, name.size(), false);  // the system's name, agreed to
       }
       continue;
     }
@@ -192,6 +194,7 @@ void Compiler::declare(const ParsedLine& line, std::uint32_t procedure) {
       if (existing != globals_.end()) {
         const GlobalVariable& g = program_->globals[existing->second];
         if (g.type != type || g.dimensions != dims) error(ErrorCode::GlobalRedefined, pos, name);
+        else record(SymbolOf::Global, existing->second, 0, pos, name.size(), true);  // declared again, alike
         continue;
       }
       GlobalVariable v;
@@ -201,7 +204,7 @@ void Compiler::declare(const ParsedLine& line, std::uint32_t procedure) {
       v.cell_count = std::uint32_t(cells);
       v.initial = zero_of(type);
       v.declared = pos;
-      add_global(std::move(v));
+      record(SymbolOf::Global, add_global(std::move(v)), 0, pos, name.size(), true);
     } else {
       if (existing != globals_.end()) {
         error(ErrorCode::AlreadyGlobal, pos, name);
@@ -220,6 +223,7 @@ void Compiler::declare_local(std::uint32_t procedure, std::string_view name, Typ
   if (auto it = source.locals.find(key); it != source.locals.end()) {
     const LocalVariable& l = proc.locals[it->second];
     if (l.type != type || l.dimensions != dims) error(redefined, pos, name);
+    else record(SymbolOf::Local, it->second, procedure, pos, name.size(), true);
     return;
   }
   LocalVariable l;
@@ -233,6 +237,7 @@ void Compiler::declare_local(std::uint32_t procedure, std::string_view name, Typ
   source.locals.emplace(key, std::uint32_t(proc.locals.size()));
   proc.locals.push_back(std::move(l));
   local_names_.emplace(key, pos);
+  record(SymbolOf::Local, std::uint32_t(proc.locals.size() - 1), procedure, pos, name.size(), true);
 }
 
 std::optional<std::uint32_t> Compiler::lookup_global(std::string_view name) const {
