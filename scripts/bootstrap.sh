@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 type=${1:-Debug}
-packages=(cmake make g++ libeigen3-dev libfmt-dev tao-pegtl-dev libgtest-dev libpugixml-dev)
+packages=(cmake make g++ libeigen3-dev libfmt-dev tao-pegtl-dev libgtest-dev libpugixml-dev nlohmann-json3-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

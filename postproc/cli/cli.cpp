@@ -69,6 +69,7 @@ const std::vector<Subcommand>& subcommands() {
       verify_command(),
       script_command(),
       new_post_command(),
+      lsp_command(),
   };
   return all;
 }

@@ -69,5 +69,6 @@ Subcommand plot_command();
 Subcommand verify_command();
 Subcommand script_command();
 Subcommand new_post_command();
+Subcommand lsp_command();
 
 }  // namespace postproc::cli

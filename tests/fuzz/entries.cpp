@@ -17,6 +17,7 @@
 #include "machines/2xaxiscnc/reader.hpp"
 #include "machines/iso/reader.hpp"
 #include "machines/pikocnc/reader.hpp"
+#include "lsp/server.hpp"
 #include "machines/registry/registry.hpp"
 #include "machines/sinumerik/reader.hpp"
 #include "machines/pikocnc/script/script.hpp"
@@ -283,6 +284,18 @@ void controllers(std::string_view data) {
   }
 }
 
+void lsp(std::string_view data) {
+  // The bytes are what an editor sends on the server's standard input: frames, headers, JSON.
+  // Every request gets an answer or an error; nothing the client sends may escape as an exception.
+  struct Discard final : std::streambuf {
+    int overflow(int c) override { return c; }
+    std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+  } discard;
+  std::ostream nowhere(&discard);
+  std::istringstream in{std::string(data)};
+  lsp::serve(in, nowhere, nowhere);
+}
+
 void pikocnc_script(std::string_view data) {
   // A stream buffer that throws the G-code away: a script may write a lot within its step budget.
   struct Discard final : std::streambuf {
@@ -325,7 +338,7 @@ Entry entry(std::string_view target) {
       {"trace_reader", trace_reader}, {"gppl_check", gppl_check}, {"gppl_run", gppl_run},
       {"display_format", display_format}, {"prp_loader", prp_loader}, {"pikocnc", pikocnc},
       {"vmid", vmid}, {"twoaxis", twoaxis}, {"pikocnc_script", pikocnc_script}, {"sinumerik", sinumerik},
-      {"iso", iso}, {"controllers", controllers},
+      {"iso", iso}, {"controllers", controllers}, {"lsp", lsp},
   };
   for (const Named& n : kEntries)
     if (n.name == target) return n.entry;

@@ -20,7 +20,8 @@ void twoaxis(std::string_view data);         // read a 2XAxisCNC program back in
 void sinumerik(std::string_view data);       // read a Sinumerik program back into stream commands
 void iso(std::string_view data);             // read a Fanuc/LinuxCNC/Mach3/GRBL program (first byte: which)
 void controllers(std::string_view data);     // every registered controller's reader (bytes 1-2: which, how)
-void pikocnc_script(std::string_view data);  // parse, check and run a PikoCNC script, bounded, output discarded
+void pikocnc_script(std::string_view data);
+void lsp(std::string_view data);             // a language server session: framed JSON-RPC messages, replies discarded  // parse, check and run a PikoCNC script, bounded, output discarded
 
 // The entry of a target by name (the folder names under regressions/); nullptr when unknown.
 using Entry = void (*)(std::string_view);

@@ -19,6 +19,7 @@ set(rules
   "postproc/engine|machines/ postproc/checks/ postproc/cli/ bench/ tests/"
   "postproc/checks|postproc/cli/ bench/ tests/"
   "postproc/cli|bench/ tests/"
+  "lsp|postproc/cli/ machines/ bench/ tests/"
 )
 set(violations "")
 set(scanned 0)
