@@ -354,6 +354,81 @@ json document_symbols(const Document& doc) {
   return out;
 }
 
+json code_actions(const Document& doc, const json& params) {
+  json out = json::array();
+  for (const json& d : params.at("context").at("diagnostics")) {
+    const int code = d.contains("code") && d["code"].is_number_integer() ? d["code"].get<int>() : 0;
+    const std::string message = d.value("message", "");
+    // "... did you mean 'blknum'?" (a name), "...; did you mean @rapid_move?" (a procedure)
+    if (const std::size_t at = message.rfind("did you mean "); at != std::string::npos) {
+      std::string guess = message.substr(at + 13);
+      if (!guess.empty() && guess.back() == '?') guess.pop_back();
+      if (guess.size() > 2 && guess.front() == '\'' && guess.back() == '\'') guess = guess.substr(1, guess.size() - 2);
+      if (!guess.empty() && std::all_of(guess.begin() + (guess[0] == '@'), guess.end(), ident_char))
+        out.push_back({{"title", fmt::format("Change to {}", guess)},
+                       {"kind", "quickfix"},
+                       {"diagnostics", json::array({d})},
+                       {"isPreferred", true},
+                       {"edit", {{"changes", {{doc.uri, json::array({{{"range", d["range"]}, {"newText", guess}}})}}}}}});
+    }
+    if (code != 383 && code != 404) continue;
+    // Declare it in the procedure it is used in, after the header: the user picks the type.
+    const auto [line, column] = doc.lines.from_protocol(d.at("range").at("start"));
+    const Word w = word_at(doc.lines.line(line), column);
+    const auto procedure = enclosing_procedure(doc, line);
+    if (w.text.empty() || w.text[0] == '@' || !procedure) continue;
+    const gppl::Symbol& p = doc.symbols.symbols[*procedure];
+    const auto header = static_cast<std::uint32_t>(p.where.line);
+    for (std::string_view type : {"numeric", "integer", "string", "logical"})
+      out.push_back({{"title", fmt::format("Declare '{}' as a local {} of {}", w.text, type, p.name)},
+                     {"kind", "quickfix"},
+                     {"diagnostics", json::array({d})},
+                     {"edit", {{"changes", {{doc.uri, json::array({{{"range", doc.lines.range(header + 1, 1, 0)},
+                                                                   {"newText", fmt::format("  local {} {}\n", type, w.text)}}})}}}}}});
+  }
+  return out;
+}
+
+json formatting(const Document& doc, const json& params) {
+  const json& options = params.at("options");
+  const std::string unit = options.value("insertSpaces", true) ? std::string(std::size_t(options.value("tabSize", 2)), ' ') : "\t";
+  json edits = json::array();
+  int depth = 0;
+  bool in_procedure = false;
+  for (std::uint32_t l = 1; l <= doc.lines.count(); ++l) {
+    const std::string_view text = doc.lines.line(l);
+    const std::size_t first = text.find_first_not_of(" \t");
+    if (first == std::string_view::npos) continue;  // blank: as it is
+    const std::string_view t = text.substr(first);
+    std::size_t n = t[0] == '@' ? 1 : 0;
+    while (n < t.size() && ident_char(t[n])) ++n;
+    const std::string word = lower(t.substr(0, n));
+    int level = in_procedure ? 1 + depth : 0;
+    if (word.size() > 1 && word[0] == '@') {
+      in_procedure = true;
+      depth = 0;
+      level = 0;
+    } else if (word == "endp") {
+      in_procedure = false;
+      depth = 0;
+      level = 0;
+    } else if (word == "endif" || word == "endw") {
+      depth = std::max(0, depth - 1);
+      level = in_procedure ? 1 + depth : 0;
+    } else if (word == "else" || word == "elseif") {
+      level = in_procedure ? std::max(1, depth) : 0;
+    }
+    std::string indent;
+    for (int i = 0; i < level; ++i) indent += unit;
+    if (text.substr(0, first) != indent)
+      edits.push_back({{"range", {{"start", {{"line", l - 1}, {"character", 0}}},
+                                  {"end", doc.lines.to_protocol(l, static_cast<std::uint32_t>(first + 1))}}},
+                       {"newText", indent}});
+    if (word == "if" || word == "while") ++depth;
+  }
+  return edits;
+}
+
 json folding_ranges(const Document& doc) {
   json out = json::array();
   std::vector<std::pair<std::string, std::uint32_t>> open;  // what opened, on which line

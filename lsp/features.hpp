@@ -19,5 +19,10 @@ json references(Workspace& workspace, const Document& doc, const json& params);
 json rename(Workspace& workspace, const Document& doc, const json& params);
 json document_symbols(const Document& doc);
 json folding_ranges(const Document& doc);
+// Quick fixes where the fix is certain: the "did you mean" of a diagnostic; declaring an undefined
+// name as a local of the procedure it is used in.
+json code_actions(const Document& doc, const json& params);
+// Indentation only (procedure bodies, if/while blocks), so a post's meaning cannot change.
+json formatting(const Document& doc, const json& params);
 
 }  // namespace lsp

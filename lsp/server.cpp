@@ -91,7 +91,9 @@ struct Server::Impl {
               {"referencesProvider", true},
               {"renameProvider", true},
               {"documentSymbolProvider", true},
-              {"foldingRangeProvider", true}}},
+              {"foldingRangeProvider", true},
+              {"codeActionProvider", {{"codeActionKinds", {"quickfix"}}}},
+              {"documentFormattingProvider", true}}},
             {"serverInfo", {{"name", "postproc lsp"}}}};
   }
 
@@ -120,6 +122,8 @@ struct Server::Impl {
     }
     if (method == "textDocument/documentSymbol") return document_symbols(document(params));
     if (method == "textDocument/foldingRange") return folding_ranges(document(params));
+    if (method == "textDocument/codeAction") return code_actions(document(params), params);
+    if (method == "textDocument/formatting") return formatting(document(params), params);
     throw RequestError{kMethodNotFound, fmt::format("no method {}", method)};
   }
 

@@ -280,6 +280,96 @@ TEST(LspEditing, CompletionHoverSymbolsFoldingSignatures) {
   EXPECT_EQ(spans, (std::vector<std::string>{"0-3", "4-10", "12-13", "11-15", "16-19"}));
 }
 
+TEST(LspEditing, QuickFixes) {
+  Client c;
+  c.initialize();
+  const std::string uri = "file:///tmp/fix.gpp";
+  c.open(uri, "@line\n  n = blknun\nendp\n");
+  const json diagnostics = json::array({{{"range", {{"start", {{"line", 1}, {"character", 6}}}, {"end", {{"line", 1}, {"character", 12}}}}},
+                                         {"code", 383},
+                                         {"message", "Variable 'blknun' is not defined: did you mean 'blknum'?"}},
+                                        {{"range", {{"start", {{"line", 1}, {"character", 2}}}, {"end", {{"line", 1}, {"character", 3}}}}},
+                                         {"code", 404},
+                                         {"message", "Symbol 'n' does not exist"}}});
+  const json actions = c.request("textDocument/codeAction", {{"textDocument", {{"uri", uri}}},
+                                                             {"range", diagnostics[0]["range"]},
+                                                             {"context", {{"diagnostics", diagnostics}}}})["result"];
+  std::vector<std::string> titles;
+  for (const auto& a : actions) titles.push_back(a["title"]);
+  EXPECT_EQ(titles, (std::vector<std::string>{"Change to blknum", "Declare 'blknun' as a local numeric of @line",
+                                              "Declare 'blknun' as a local integer of @line",
+                                              "Declare 'blknun' as a local string of @line",
+                                              "Declare 'blknun' as a local logical of @line",
+                                              "Declare 'n' as a local numeric of @line", "Declare 'n' as a local integer of @line",
+                                              "Declare 'n' as a local string of @line", "Declare 'n' as a local logical of @line"}));
+  EXPECT_EQ(actions[0]["edit"]["changes"][uri][0]["newText"], "blknum");
+  EXPECT_EQ(actions[5]["edit"]["changes"][uri][0],
+            (json{{"range", {{"start", {{"line", 1}, {"character", 0}}}, {"end", {{"line", 1}, {"character", 0}}}}},
+                  {"newText", "  local numeric n\n"}}));
+}
+
+// Text edits applied as an editor applies them (from the last to the first).
+std::string apply_edits(std::string text, const json& edits) {
+  std::vector<std::size_t> starts{0};
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n') starts.push_back(i + 1);
+  std::vector<json> sorted(edits.begin(), edits.end());
+  std::sort(sorted.begin(), sorted.end(), [](const json& a, const json& b) {
+    return a["range"]["start"]["line"].get<int>() > b["range"]["start"]["line"].get<int>();
+  });
+  for (const json& e : sorted) {  // ASCII posts: characters are bytes
+    const std::size_t begin = starts[e["range"]["start"]["line"].get<std::size_t>()] + e["range"]["start"]["character"].get<std::size_t>();
+    const std::size_t end = starts[e["range"]["end"]["line"].get<std::size_t>()] + e["range"]["end"]["character"].get<std::size_t>();
+    text.replace(begin, end - begin, e["newText"].get<std::string>());
+  }
+  return text;
+}
+
+TEST(LspEditing, FormattingIndentsBlocksAndNothingElse) {
+  Client c;
+  c.initialize();
+  const std::string uri = "file:///tmp/format.gpp";
+  c.open(uri, "; top\n@line\nif xpos > 0 ; cut\n{nb, 'G1'}\n      else\nwhile blknum < 3\n blknum = blknum + 1\n   endw\n  endif\n\n    endp\n");
+  const json edits = c.request("textDocument/formatting", {{"textDocument", {{"uri", uri}}},
+                                                           {"options", {{"tabSize", 2}, {"insertSpaces", true}}}})["result"];
+  EXPECT_EQ(apply_edits("; top\n@line\nif xpos > 0 ; cut\n{nb, 'G1'}\n      else\nwhile blknum < 3\n blknum = blknum + 1\n   endw\n  endif\n\n    endp\n", edits),
+            "; top\n@line\n  if xpos > 0 ; cut\n    {nb, 'G1'}\n  else\n    while blknum < 3\n      blknum = blknum + 1\n    endw\n  endif\n\nendp\n");
+}
+
+// Every post we ship formats to a post with the same statements (only leading blanks change) and
+// the same check result.
+TEST(LspEditing, FormattingTheShippedPostsKeepsTheirMeaning) {
+  std::size_t posts = 0;
+  for (const auto& entry : fs::recursive_directory_iterator("../machines")) {
+    if (entry.path().extension() != ".gpp") continue;
+    ++posts;
+    SCOPED_TRACE(entry.path().string());
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    Client c;
+    c.initialize();
+    const std::string uri = "file://" + fs::absolute(entry.path()).string();
+    c.open(uri, text.str());
+    const auto before = c.diagnostics(uri);
+    const json edits = c.request("textDocument/formatting", {{"textDocument", {{"uri", uri}}},
+                                                             {"options", {{"tabSize", 2}, {"insertSpaces", true}}}})["result"];
+    const std::string formatted = apply_edits(text.str(), edits);
+    auto statements = [](const std::string& t) {
+      std::vector<std::string> out;
+      std::istringstream lines(t);
+      std::string line;
+      while (std::getline(lines, line)) out.push_back(line.substr(std::min(line.size(), line.find_first_not_of(" \t"))));
+      return out;
+    };
+    EXPECT_EQ(statements(formatted), statements(text.str()));
+    c.notify("textDocument/didChange", {{"textDocument", {{"uri", uri}, {"version", 2}}},
+                                        {"contentChanges", json::array({{{"text", formatted}}})}});
+    EXPECT_EQ(c.diagnostics(uri), before);
+  }
+  EXPECT_GE(posts, 8u);
+}
+
 // Columns are UTF-16 characters in the protocol: a Polish comment before a name moves it.
 TEST(LspPositions, Utf16ColumnsAgainstByteColumns) {
   Client c;
