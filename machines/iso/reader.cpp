@@ -17,7 +17,6 @@
 
 #include "machines/ncmodel/block_text.hpp"
 #include "machines/ncmodel/motion_out.hpp"
-#include "machines/pikocnc/geometry.hpp"
 #include "machines/pikocnc/line_reader.hpp"
 #include "toolpath/error.hpp"
 #include "toolpath/geometry.hpp"
@@ -730,14 +729,12 @@ struct IsoReader::Impl {
     Eigen::Vector3d centre = out.position();
     if (const Word* r = find(w, 'R')) {
       const Eigen::Vector3d& from = out.position();
-      if ((pikocnc::in_plane(from, plane) - pikocnc::in_plane(to, plane)).norm() < 1e-9)
+      if ((geo::in_plane(from, plane) - geo::in_plane(to, plane)).norm() < 1e-9)
         throw BlockError{r->column, "an R arc cannot be a full circle: give I J K"};
-      const auto c2 = pikocnc::centre_from_radius(pikocnc::in_plane(from, plane), pikocnc::in_plane(to, plane),
-                                                  step(geo::axes(plane).first, r->value), ccw, options.arc_tolerance);
-      if (!c2) throw BlockError{r->column, fmt::format("R{:g} cannot join the start and the end point", r->value)};
-      const geo::PlaneAxes ax = geo::axes(plane);
-      centre[ax.first] = c2->x();
-      centre[ax.second] = c2->y();
+      const auto c = geo::centre_from_radius(from, to, step(geo::axes(plane).first, r->value), plane,
+                                             ccw ? geo::Direction::CCW : geo::Direction::CW, options.arc_tolerance);
+      if (!c) throw BlockError{r->column, fmt::format("R{:g} cannot join the start and the end point", r->value)};
+      centre = *c;
     } else {
       bool any = false;
       for (int a = 0; a < 3; ++a)
@@ -748,8 +745,8 @@ struct IsoReader::Impl {
       if (!any) throw BlockError{1, fmt::format("G{} needs its centre (I J K) or R", ccw ? 3 : 2)};
       // The control's alarm when the end is not on the circle (LinuxCNC: "radius to end of arc
       // differs from radius to start"): beyond the tolerance and 0.1 % of the radius.
-      const double r0 = (pikocnc::in_plane(out.position(), plane) - pikocnc::in_plane(centre, plane)).norm();
-      const double r1 = (pikocnc::in_plane(to, plane) - pikocnc::in_plane(centre, plane)).norm();
+      const double r0 = (geo::in_plane(out.position(), plane) - geo::in_plane(centre, plane)).norm();
+      const double r1 = (geo::in_plane(to, plane) - geo::in_plane(centre, plane)).norm();
       if (std::abs(r1 - r0) > std::max(options.arc_tolerance, 0.001 * r0))
         throw BlockError{1, fmt::format("the end point is {:.4f} mm from the centre, the start {:.4f} mm: not one circle",
                                         r1, r0)};

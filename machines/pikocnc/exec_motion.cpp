@@ -201,7 +201,8 @@ void Interpreter::arc(bool ccw, Words& w) {
   if (w.free('R')) {
     const double r = w.len_plain('R');
     for (char l : {first, second}) if (w.free(l)) warn(w.col(l), "arc with both a centre and R: R is used");
-    const auto c = centre_from_radius(s2, e2, r, ccw, options_.arc_tolerance);
+    const auto c = toolpath::geometry::centre_from_radius(start, end, r, plane, ccw ? Direction::CCW : Direction::CW,
+                                                          options_.arc_tolerance);
     if (!c) {
       if ((e2 - s2).norm() < 1e-12) fail(w.col('R'), "an arc given by R needs an end point different from its start");
       const std::string msg = fmt::format("arc radius {} does not fit its end points: the chord is {} long (more than 2R + {})",
@@ -211,7 +212,7 @@ void Interpreter::arc(bool ccw, Words& w) {
       straight(MoveKind::Feed, end, s_.prog_a, s_.prog_b);
       return;
     }
-    c2 = *c;
+    c2 = in_plane(*c, plane);
   } else {
     if (!w.free(first) && !w.free(second))
       fail(motion_column_, fmt::format("arc needs a centre ({}, {}) or a radius (R)", first, second));

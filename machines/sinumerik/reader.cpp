@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -18,7 +19,6 @@
 
 #include <Eigen/Core>
 
-#include "machines/pikocnc/geometry.hpp"
 #include "machines/ncmodel/block_text.hpp"
 #include "machines/ncmodel/motion_out.hpp"
 #include "machines/pikocnc/line_reader.hpp"
@@ -252,8 +252,8 @@ struct SinumerikReader::Impl {
         if (!c.eat(')')) throw BlockError{c.column(), "expected `)`"};
         if (name == "ABS") return std::abs(v);
         if (name == "SQRT") return std::sqrt(v);
-        if (name == "SIN") return std::sin(v * pikocnc::kPi / 180);
-        if (name == "COS") return std::cos(v * pikocnc::kPi / 180);
+        if (name == "SIN") return std::sin(v * std::numbers::pi / 180);
+        if (name == "COS") return std::cos(v * std::numbers::pi / 180);
         if (name == "TRUNC") return std::trunc(v);
         if (name == "ROUND") return std::round(v);
         throw BlockError{col, fmt::format("the function {} is not modelled", name)};
@@ -684,11 +684,10 @@ struct SinumerikReader::Impl {
     const geo::PlaneAxes ax = geo::axes(plane);
     Eigen::Vector3d centre = pos;
     if (b.cr) {
-      const auto c2 = pikocnc::centre_from_radius(pikocnc::in_plane(pos, plane), pikocnc::in_plane(to, plane),
-                                                  *b.cr * length_unit(), ccw, options.arc_tolerance);
-      if (!c2) throw BlockError{1, fmt::format("CR={} cannot join the start and the end point", *b.cr)};
-      centre[ax.first] = c2->x();
-      centre[ax.second] = c2->y();
+      const auto c = geo::centre_from_radius(pos, to, *b.cr * length_unit(), plane,
+                                             ccw ? geo::Direction::CCW : geo::Direction::CW, options.arc_tolerance);
+      if (!c) throw BlockError{1, fmt::format("CR={} cannot join the start and the end point", *b.cr)};
+      centre = *c;
     } else {
       bool any = false;
       for (int a : {ax.first, ax.second}) {
