@@ -20,8 +20,8 @@
 #include <Eigen/Core>
 
 #include "machines/ncmodel/block_text.hpp"
+#include "machines/ncmodel/line_reader.hpp"
 #include "machines/ncmodel/motion_out.hpp"
-#include "machines/pikocnc/line_reader.hpp"
 #include "toolpath/error.hpp"
 #include "toolpath/geometry.hpp"
 #include "toolpath/value.hpp"
@@ -62,11 +62,11 @@ struct Source {
   fs::path path;
   std::string name;  // as messages show it
   std::unique_ptr<std::istream> stream;
-  std::unique_ptr<pikocnc::LineReader> lines;
-  std::map<std::string, pikocnc::LineReader::Mark, std::less<>> labels;  // upper case, seen so far
+  std::unique_ptr<ncmodel::LineReader> lines;
+  std::map<std::string, ncmodel::LineReader::Mark, std::less<>> labels;  // upper case, seen so far
   std::size_t repeats_left = 0;  // further passes of a call with P
-  pikocnc::LineReader::Mark start;
-  pikocnc::LineReader::Mark before;  // where the line read last starts (a label's block)
+  ncmodel::LineReader::Mark start;
+  ncmodel::LineReader::Mark before;  // where the line read last starts (a label's block)
 };
 
 // The values of `X=AC(3)`, `I=IC(-1)`, `X12.5`: absolute (AC), incremental (IC) or as the mode says.
@@ -161,7 +161,7 @@ struct SinumerikReader::Impl {
     s.path = p;
     s.name = name;
     s.stream = std::move(in);
-    s.lines = std::make_unique<pikocnc::LineReader>(*s.stream, name);
+    s.lines = std::make_unique<ncmodel::LineReader>(*s.stream, name);
     s.start = s.lines->mark();
     s.repeats_left = repeats - 1;
     stack.push_back(std::move(s));
@@ -777,7 +777,7 @@ struct SinumerikReader::Impl {
     // Forward: read on to the label's block (blocks in between are skipped, not executed).
     std::string_view text;
     for (;;) {
-      const pikocnc::LineReader::Mark at = s.lines->mark();
+      const ncmodel::LineReader::Mark at = s.lines->mark();
       if (!s.lines->next(text)) throw BlockError{j.column, fmt::format("GOTOF: no label {} after this block", j.label)};
       if (label_of(text) == j.label) {
         s.lines->seek(at);
