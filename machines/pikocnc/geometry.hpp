@@ -1,8 +1,8 @@
-// Arc geometry in a working plane, with Eigen: centre from R, sweep, angles.
+// The working planes and arc directions under the model's names (they are the stream's), and how
+// the model rounds printed values and reads integer words.
 #pragma once
 
 #include <Eigen/Dense>
-#include <optional>
 
 #include "toolpath/geometry.hpp"
 
@@ -18,16 +18,7 @@ using Direction = toolpath::geometry::Direction;
 inline PlaneAxes axes_of(Plane p) { return toolpath::geometry::axes(p); }
 using toolpath::geometry::plane_name;
 
-constexpr double kPi = 3.14159265358979323846;
-
 using toolpath::geometry::in_plane;
-
-// Swept angle (radians, > 0) from `start` to `end` around `centre`, turning counter-clockwise when
-// `ccw`. Equal start and end angles give a full circle.
-double sweep_angle(const Eigen::Vector2d& start, const Eigen::Vector2d& end, const Eigen::Vector2d& centre, bool ccw);
-
-// Angle of `p` around `centre` in degrees, in [0, 360).
-double angle_degrees(const Eigen::Vector2d& p, const Eigen::Vector2d& centre);
 
 // Rounds to 1e-9 (a nanometre) and turns -0 into 0, so printed values are short and stable.
 double clean(double v);

@@ -1,17 +1,12 @@
-// Arc and transformation vectors of sections 5.3 and 10.
+// Transformation vectors of section 10.
 #include <gtest/gtest.h>
 
-#include "machines/pikocnc/geometry.hpp"
 #include "machines/pikocnc/transforms.hpp"
 
 namespace {
 
 using Eigen::Vector3d;
 using pikocnc::Plane;
-
-TEST(PikoGeometry, FullCircleSweep) {
-  EXPECT_NEAR(pikocnc::sweep_angle({0, 0}, {0, 0}, {5, 0}, false), 2 * pikocnc::kPi, 1e-12);
-}
 
 TEST(PikoTransforms, DocumentVectors) {
   const Vector3d p(10, 20, 5);
