@@ -62,6 +62,11 @@ double normalize_degrees(double degrees) {
   return r >= 360.0 ? 0.0 : r;
 }
 
+Eigen::Vector2d in_plane(const Eigen::Vector3d& p, Plane plane) {
+  const PlaneAxes a = axes(plane);
+  return {p[a.first], p[a.second]};
+}
+
 double Arc::start_angle() const { return angle_about(start, centre, axes(plane)); }
 double Arc::end_angle() const { return angle_about(end, centre, axes(plane)); }
 double Arc::rise() const { return end[axes(plane).normal] - start[axes(plane).normal]; }
@@ -108,6 +113,26 @@ Arc make_arc(const Eigen::Vector3d& start, const Eigen::Vector3d& end, const Eig
   if (sweep < 1e-9 && !(sweep_hint && *sweep_hint < 180.0)) sweep = 360.0;
   arc.sweep = sweep;
   return arc;
+}
+
+std::optional<Eigen::Vector3d> centre_from_radius(const Eigen::Vector3d& start, const Eigen::Vector3d& end,
+                                                  double r, Plane plane, Direction direction, double tolerance) {
+  const Eigen::Vector2d s = in_plane(start, plane), e = in_plane(end, plane);
+  const Eigen::Vector2d chord = e - s;
+  const double d = chord.norm();
+  const double ra = std::abs(r);
+  if (d < 1e-12 || d > 2 * ra + tolerance) return std::nullopt;
+  const double h2 = ra * ra - d * d / 4;
+  const double h = h2 > 0 ? std::sqrt(h2) : 0.0;
+  const Eigen::Vector2d left(-chord.y() / d, chord.x() / d);
+  // The centre of the minor arc lies left of the chord for a counter-clockwise move.
+  const double side = (direction == Direction::CCW ? 1.0 : -1.0) * (r >= 0 ? 1.0 : -1.0);
+  const Eigen::Vector2d c = (s + e) / 2 + side * h * left;
+  const PlaneAxes a = axes(plane);
+  Eigen::Vector3d centre = start;
+  centre[a.first] = c.x();
+  centre[a.second] = c.y();
+  return centre;
 }
 
 std::vector<double> quadrant_crossings(const Arc& arc, double tolerance) {

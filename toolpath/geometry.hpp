@@ -26,6 +26,9 @@ std::optional<Plane> parse_plane(std::string_view name);  // case-insensitive XY
 // Degrees in [0, 360).
 double normalize_degrees(double degrees);
 
+// The in-plane coordinates (first, second axis) of `p`.
+Eigen::Vector2d in_plane(const Eigen::Vector3d& p, Plane plane);
+
 // A circular arc, helical when start and end differ along the plane's normal (the normal
 // coordinate then changes linearly with the angle).
 struct Arc {
@@ -55,6 +58,13 @@ struct Arc {
 // a full circle and a vanishing arc when start and end coincide in the plane.
 Arc make_arc(const Eigen::Vector3d& start, const Eigen::Vector3d& end, const Eigen::Vector3d& centre,
              Plane plane, Direction direction, std::optional<double> sweep_hint);
+
+// The centre of an R-form arc of radius |r| from `start` to `end` in `plane`: for r > 0 the arc of
+// at most 180 degrees, for r < 0 the larger one. The centre's normal coordinate is the start's.
+// nullopt when start and end coincide in the plane or lie more than 2|r| + `tolerance` apart
+// (within the tolerance the half circle is used).
+std::optional<Eigen::Vector3d> centre_from_radius(const Eigen::Vector3d& start, const Eigen::Vector3d& end,
+                                                  double r, Plane plane, Direction direction, double tolerance);
 
 // Offsets (degrees from the start) where the arc crosses a multiple of 90 degrees, strictly
 // inside the arc (a crossing within `tolerance` degrees of either end does not count).

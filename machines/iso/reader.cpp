@@ -16,9 +16,8 @@
 #include <Eigen/Core>
 
 #include "machines/ncmodel/block_text.hpp"
+#include "machines/ncmodel/line_reader.hpp"
 #include "machines/ncmodel/motion_out.hpp"
-#include "machines/pikocnc/geometry.hpp"
-#include "machines/pikocnc/line_reader.hpp"
 #include "toolpath/error.hpp"
 #include "toolpath/geometry.hpp"
 
@@ -70,10 +69,10 @@ struct IsoReader::Impl {
   Options options;
   std::string name;
   std::unique_ptr<std::istream> stream;
-  std::unique_ptr<pikocnc::LineReader> lines;
-  std::map<long long, pikocnc::LineReader::Mark> programs;  // O<n> lines (Fanuc), start of the line
-  std::map<std::string, pikocnc::LineReader::Mark> subs;    // o<name> sub lines (LinuxCNC)
-  pikocnc::LineReader::Mark before;                         // where the line read last starts
+  std::unique_ptr<ncmodel::LineReader> lines;
+  std::map<long long, ncmodel::LineReader::Mark> programs;  // O<n> lines (Fanuc), start of the line
+  std::map<std::string, ncmodel::LineReader::Mark> subs;    // o<name> sub lines (LinuxCNC)
+  ncmodel::LineReader::Mark before;                         // where the line read last starts
   std::size_t current_line = 0, command_line = 0;
   toolpath::Diagnostics diagnostics;
   std::set<std::string> warned;
@@ -84,7 +83,7 @@ struct IsoReader::Impl {
   std::vector<const Word*> g_codes_, m_codes_;
 
   struct Frame {  // a subprogram being run
-    pikocnc::LineReader::Mark body, back;
+    ncmodel::LineReader::Mark body, back;
     long long repeats_left = 0;
     std::string o_name;  // LinuxCNC o-word sub: its endsub returns
     std::map<long long, double> caller_locals;  // LinuxCNC: #1-#30 of the caller, back at endsub
@@ -92,7 +91,7 @@ struct IsoReader::Impl {
   std::vector<Frame> calls;
   struct Repeat {  // o<n> repeat, WHILE .. DOm
     std::string key;
-    pikocnc::LineReader::Mark body;
+    ncmodel::LineReader::Mark body;
     long long remaining = 0;
   };
   std::vector<Repeat> repeats;
@@ -119,16 +118,16 @@ struct IsoReader::Impl {
 
   Impl(std::unique_ptr<std::istream> in, std::string n, const Rules& r, Options o)
       : rules(r), options(o), name(std::move(n)), stream(std::move(in)), diagnostics(o.max_diagnostics) {
-    lines = std::make_unique<pikocnc::LineReader>(*stream, name);
+    lines = std::make_unique<ncmodel::LineReader>(*stream, name);
     index_labels();
   }
 
   // One pass over the program for its O numbers and o-word subs, then back to the start.
   void index_labels() {
-    const pikocnc::LineReader::Mark start = lines->mark();
+    const ncmodel::LineReader::Mark start = lines->mark();
     std::string_view text;
     for (;;) {
-      const pikocnc::LineReader::Mark at = lines->mark();
+      const ncmodel::LineReader::Mark at = lines->mark();
       if (!lines->next(text)) break;
       Cursor c{text, 0};
       skip_block_number(c);
@@ -552,10 +551,10 @@ struct IsoReader::Impl {
   }
 
   // Runs a body (the line after `at`), `times` times, then comes back after the calling line.
-  void call(const pikocnc::LineReader::Mark& at, long long times, const std::string& o_name, std::size_t col) {
+  void call(const ncmodel::LineReader::Mark& at, long long times, const std::string& o_name, std::size_t col) {
     if (calls.size() >= options.max_call_depth)
       throw BlockError{col, fmt::format("subprograms nested deeper than {} (a recursion?)", options.max_call_depth)};
-    const pikocnc::LineReader::Mark back = lines->mark();
+    const ncmodel::LineReader::Mark back = lines->mark();
     lines->seek(at);
     std::string_view header;
     lines->next(header);  // the O / sub line itself
@@ -761,14 +760,12 @@ struct IsoReader::Impl {
     Eigen::Vector3d centre = out.position();
     if (const Word* r = find(w, 'R')) {
       const Eigen::Vector3d& from = out.position();
-      if ((pikocnc::in_plane(from, plane) - pikocnc::in_plane(to, plane)).norm() < 1e-9)
+      if ((geo::in_plane(from, plane) - geo::in_plane(to, plane)).norm() < 1e-9)
         throw BlockError{r->column, "an R arc cannot be a full circle: give I J K"};
-      const auto c2 = pikocnc::centre_from_radius(pikocnc::in_plane(from, plane), pikocnc::in_plane(to, plane),
-                                                  step(geo::axes(plane).first, r->value), ccw, options.arc_tolerance);
-      if (!c2) throw BlockError{r->column, fmt::format("R{:g} cannot join the start and the end point", r->value)};
-      const geo::PlaneAxes ax = geo::axes(plane);
-      centre[ax.first] = c2->x();
-      centre[ax.second] = c2->y();
+      const auto c = geo::centre_from_radius(from, to, step(geo::axes(plane).first, r->value), plane,
+                                             ccw ? geo::Direction::CCW : geo::Direction::CW, options.arc_tolerance);
+      if (!c) throw BlockError{r->column, fmt::format("R{:g} cannot join the start and the end point", r->value)};
+      centre = *c;
     } else {
       bool any = false;
       for (int a = 0; a < 3; ++a)
@@ -779,8 +776,8 @@ struct IsoReader::Impl {
       if (!any) throw BlockError{1, fmt::format("G{} needs its centre (I J K) or R", ccw ? 3 : 2)};
       // The control's alarm when the end is not on the circle (LinuxCNC: "radius to end of arc
       // differs from radius to start"): beyond the tolerance and 0.1 % of the radius.
-      const double r0 = (pikocnc::in_plane(out.position(), plane) - pikocnc::in_plane(centre, plane)).norm();
-      const double r1 = (pikocnc::in_plane(to, plane) - pikocnc::in_plane(centre, plane)).norm();
+      const double r0 = (geo::in_plane(out.position(), plane) - geo::in_plane(centre, plane)).norm();
+      const double r1 = (geo::in_plane(to, plane) - geo::in_plane(centre, plane)).norm();
       if (std::abs(r1 - r0) > std::max(options.arc_tolerance, 0.001 * r0))
         throw BlockError{1, fmt::format("the end point is {:.4f} mm from the centre, the start {:.4f} mm: not one circle",
                                         r1, r0)};

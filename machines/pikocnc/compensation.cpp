@@ -15,9 +15,6 @@ constexpr double kMinMotion = 1e-9;  // mm: shorter moves are not emitted
 // Moves along the plane normal held behind one waiting element; beyond this the contour is ended.
 constexpr std::size_t kMaxBetween = 100000;
 
-// A parameter difference as a length along the element.
-double length_of(const OffsetElement& e, double dt) { return e.arc ? dt * e.radius : dt; }
-
 }  // namespace
 
 bool moves_in_plane(const Move& m, Plane plane) {
@@ -79,7 +76,7 @@ OffsetElement Compensator::element(const Move& m, SourcePlace where) const {
   const Eigen::Vector2d a = flat(m.from), b = flat(m.to);
   if (m.kind != MoveKind::Arc) return offset_line(a, b, offset_);
   const Eigen::Vector2d c = flat(m.centre);
-  const OffsetElement e = offset_arc(a, b, c, m.ccw, m.sweep, offset_);
+  const OffsetElement e = offset_arc(a, b, c, m.direction == Direction::CCW, m.sweep, offset_);
   if (e.radius < -point_tolerance_)
     fail(where, fmt::format("arc radius {} is smaller than the compensation radius {} on the inside of the arc: "
                             "the tool does not fit (section 8.1)",
@@ -165,8 +162,8 @@ void Compensator::resolve_approach(const ChainPreview& preview, Emitter& out) {
       for (std::size_t i = 0; i < x.count; ++i) {
         const Eigen::Vector2d& p = x.point[i];
         const double tf = f.param(p, 0.0), tl = l.param(p, l.end_param());
-        if (length_of(f, tf) < -kSamePoint || length_of(f, f.end_param() - tf) <= kSamePoint) continue;
-        if (length_of(l, tl) <= kSamePoint || length_of(l, l.end_param() - tl) < -kSamePoint) continue;
+        if (f.distance(tf) < -kSamePoint || f.distance(f.end_param() - tf) <= kSamePoint) continue;
+        if (l.distance(tl) <= kSamePoint || l.distance(l.end_param() - tl) < -kSamePoint) continue;
         // two elements also cross at their own corner: that crossing is not the closing one
         if (preview.elements == 2 && (p - first_end).norm() < (p - first_start).norm()) continue;
         if (!best || tf < *best) {
@@ -267,7 +264,7 @@ void Compensator::corner(const Held& next, const OffsetElement& e, Emitter& out)
       a_end = a.param(p, a.end_param());
       a_point = p;
       b_start = e.param(p, 0.0);
-      if (length_of(e, e.end_param() - b_start) < -kSamePoint)
+      if (e.distance(e.end_param() - b_start) < -kSamePoint)
         fail(next.where, "element too short for the compensation radius: its offset path disappears at the inside "
                          "corner (section 8.1)");
     } else {
@@ -279,9 +276,11 @@ void Compensator::corner(const Held& next, const OffsetElement& e, Emitter& out)
     Move arc = next.move;
     arc.kind = MoveKind::Arc;
     arc.plane = plane_;
-    arc.ccw = offset_ < 0;
+    arc.direction = offset_ < 0 ? Direction::CCW : Direction::CW;
     arc.centre = lift(corner_point, position_[axes_of(plane_).normal]);
-    arc.sweep = sweep_angle(a.end, e.start, corner_point, arc.ccw);
+    const Eigen::Vector3d from = lift(a.end, 0.0), to = lift(e.start, 0.0), around = lift(corner_point, 0.0);
+    // a corner turns by less than a full circle, even where its ends meet (sweep hint 0)
+    arc.sweep = toolpath::geometry::make_arc(from, to, around, plane_, arc.direction, 0.0).sweep;
     arc.to = next.move.from;
     emit(arc, next.frame, lift(e.start, position_[axes_of(plane_).normal]), true, out);
   }
@@ -294,10 +293,10 @@ void Compensator::corner(const Held& next, const OffsetElement& e, Emitter& out)
 void Compensator::finish_pending(double end_param, const Eigen::Vector2d& end_point, Emitter& out) {
   const OffsetElement& e = pending_elem_;
   const double span = end_param - pending_start_;
-  if (length_of(e, span) < -kSamePoint)
+  if (e.distance(span) < -kSamePoint)
     fail(pending_.where, "element too short for the compensation radius: its offset path reverses (section 8.1)");
   out.begin_fill();
-  if (length_of(e, span) > kMinMotion) {
+  if (e.distance(span) > kMinMotion) {
     Move m = pending_.move;
     const Eigen::Vector3d to = lift(end_point, m.to[axes_of(plane_).normal]);
     if (m.kind == MoveKind::Arc) {

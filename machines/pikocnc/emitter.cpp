@@ -158,9 +158,15 @@ void Emitter::move(const Move& m, const Frame& frame) {
     return;
   }
   const Plane plane = k == 2 ? Plane::XY : k == 1 ? Plane::ZX : Plane::YZ;
-  const bool ccw = m.ccw != (normal[k] < 0);
+  const bool ccw = (m.direction == Direction::CCW) != (normal[k] < 0);  // a mirror turns the other way
   const Eigen::Vector3d from = frame.to_work(m.from), to = frame.to_work(m.to), centre = frame.to_work(m.centre);
-  const Eigen::Vector2d s2 = in_plane(from, plane), e2 = in_plane(to, plane), c2 = in_plane(centre, plane);
+  const toolpath::geometry::Arc arc{.start = from,
+                                    .end = to,
+                                    .centre = centre,
+                                    .radius = (in_plane(from, plane) - in_plane(centre, plane)).norm(),
+                                    .sweep = m.sweep,
+                                    .plane = plane,
+                                    .direction = ccw ? Direction::CCW : Direction::CW};
   add("@arc");
   positions(to, m.a, m.b);
   number("feed", m.feed);
@@ -170,10 +176,10 @@ void Emitter::move(const Move& m, const Frame& frame) {
   number("xcenter_rel", centre.x() - from.x());
   number("ycenter_rel", centre.y() - from.y());
   number("zcenter_rel", centre.z() - from.z());
-  number("radius", (s2 - c2).norm());
-  number("start_angle", angle_degrees(s2, c2));
-  number("end_angle", angle_degrees(e2, c2));
-  number("arc_size", m.sweep * 180.0 / kPi);
+  number("radius", arc.radius);
+  number("start_angle", arc.start_angle());
+  number("end_angle", arc.end_angle());
+  number("arc_size", arc.sweep);
   word("arc_direction", ccw ? "CCW" : "CW");
   word("arc_plane", plane_name(plane));
   if (m.compensated) compensation_marks(m, frame);
@@ -188,33 +194,19 @@ void Emitter::compensation_marks(const Move& m, const Frame& frame) {
 }
 
 void Emitter::chords(const Move& m, const Frame& frame) {
-  // The arc in the program frame, cut into chords short enough for the tolerance after scaling.
-  const PlaneAxes ax = axes_of(m.plane);
-  const Eigen::Vector2d s2 = in_plane(m.from, m.plane), c2 = in_plane(m.centre, m.plane);
-  const double r = (s2 - c2).norm();
+  // The arc in the program frame, cut into equal chords that keep within the tolerance after the
+  // frame stretches them: in the program frame a chord may deviate by the tolerance over the
+  // stretch. At most half a turn each, so an arc smaller than the tolerance keeps its turn; a zero
+  // tolerance asks for the finest chords, the nanometre the output is rounded to.
+  const toolpath::geometry::Arc arc = arc_of(m);
   const double stretch = frame.identity ? 1.0 : frame.m.linear().norm();
-  const double rr = std::max(r * stretch, 1e-9);
-  const double tol = std::min(chord_tolerance_, rr);
-  const double step = 2 * std::acos(1 - tol / rr);
-  const int n = std::max(1, static_cast<int>(std::ceil(m.sweep / std::max(step, 1e-6))));
-  const int count = std::min(n, 100000);
-  const double a0 = std::atan2(s2.y() - c2.y(), s2.x() - c2.x());
-  const double dir = m.ccw ? 1.0 : -1.0;
+  const double deviation = std::max(chord_tolerance_, 1e-9) / stretch;
+  const int count = std::min(toolpath::geometry::chord_count(arc, 180.0, 0.0, deviation), 100000);
   Move piece = m;
   piece.kind = MoveKind::Feed;
   for (int i = 1; i <= count; ++i) {
-    Eigen::Vector3d p;
-    if (i == count) {
-      p = m.to;
-    } else {
-      const double t = static_cast<double>(i) / count;
-      const double ang = a0 + dir * m.sweep * t;
-      p = m.from;
-      p[ax.first] = c2.x() + r * std::cos(ang);
-      p[ax.second] = c2.y() + r * std::sin(ang);
-      p[ax.normal] = m.from[ax.normal] + (m.to[ax.normal] - m.from[ax.normal]) * t;
-    }
-    straight(piece, frame.to_work(p), true);
+    // i == count: the offset is the sweep, and point_at gives the end exactly
+    straight(piece, frame.to_work(arc.point_at(arc.sweep * (static_cast<double>(i) / count))), true);
     if (m.compensated) compensation_marks(m, frame);
   }
 }

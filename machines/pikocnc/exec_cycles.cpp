@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "machines/pikocnc/interpreter_detail.hpp"
 
@@ -139,7 +140,7 @@ void Interpreter::lathe_thread(Words& w) {
   const double half = s_.diameter ? 0.5 : 1.0;
   const double r0 = w.len_plain('I') * half;
   const double step = w.len_plain('J'), depth = w.len_plain('K');
-  const double angle = w.owned('Q') ? w.raw('Q') * kPi / 180.0 : 0.0;
+  const double angle = w.owned('Q') ? w.raw('Q') * std::numbers::pi / 180.0 : 0.0;
   const double taper = w.owned('R') ? w.len_plain('R') * half : 0.0;
   if (step <= 0 || depth <= 0) {
     warn(w.col('J'), "G76 needs positive J and K: no motion");

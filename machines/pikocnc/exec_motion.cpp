@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "machines/pikocnc/interpreter_detail.hpp"
@@ -191,6 +192,7 @@ void Interpreter::motion(const Resolved& r, Words& w) {
 void Interpreter::arc(bool ccw, Words& w) {
   const Plane plane = options_.dialect == Dialect::V2016 ? Plane::XY : s_.plane;
   const PlaneAxes ax = axes_of(plane);
+  const Direction direction = ccw ? Direction::CCW : Direction::CW;
   const Eigen::Vector3d start = s_.prog;
   const Eigen::Vector3d end = target(w, false, false);
   const Eigen::Vector2d s2 = in_plane(start, plane), e2 = in_plane(end, plane);
@@ -201,7 +203,7 @@ void Interpreter::arc(bool ccw, Words& w) {
   if (w.free('R')) {
     const double r = w.len_plain('R');
     for (char l : {first, second}) if (w.free(l)) warn(w.col(l), "arc with both a centre and R: R is used");
-    const auto c = centre_from_radius(s2, e2, r, ccw, options_.arc_tolerance);
+    const auto c = toolpath::geometry::centre_from_radius(start, end, r, plane, direction, options_.arc_tolerance);
     if (!c) {
       if ((e2 - s2).norm() < 1e-12) fail(w.col('R'), "an arc given by R needs an end point different from its start");
       const std::string msg = fmt::format("arc radius {} does not fit its end points: the chord is {} long (more than 2R + {})",
@@ -211,7 +213,7 @@ void Interpreter::arc(bool ccw, Words& w) {
       straight(MoveKind::Feed, end, s_.prog_a, s_.prog_b);
       return;
     }
-    c2 = *c;
+    c2 = in_plane(*c, plane);
   } else {
     if (!w.free(first) && !w.free(second))
       fail(motion_column_, fmt::format("arc needs a centre ({}, {}) or a radius (R)", first, second));
@@ -236,8 +238,9 @@ void Interpreter::arc(bool ccw, Words& w) {
   m.centre[ax.first] = c2.x();
   m.centre[ax.second] = c2.y();
   m.plane = plane;
-  m.ccw = ccw;
-  m.sweep = sweep_angle(s2, e2, c2, ccw);
+  m.direction = direction;
+  // equal start and end points: a full circle
+  m.sweep = toolpath::geometry::make_arc(start, end, m.centre, plane, direction, std::nullopt).sweep;
   m.feed = s_.feed;
   if (s_.feed <= 0) warn(motion_column_, "arc without a feed rate (F)");
   const Frame& f = frame();

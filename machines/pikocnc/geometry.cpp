@@ -4,36 +4,6 @@
 
 namespace pikocnc {
 
-std::optional<Eigen::Vector2d> centre_from_radius(const Eigen::Vector2d& start, const Eigen::Vector2d& end,
-                                                  double r, bool ccw, double tolerance) {
-  const Eigen::Vector2d chord = end - start;
-  const double d = chord.norm();
-  const double ra = std::abs(r);
-  if (d < 1e-12 || d > 2 * ra + tolerance) return std::nullopt;
-  const double h2 = ra * ra - d * d / 4;
-  const double h = h2 > 0 ? std::sqrt(h2) : 0.0;
-  const Eigen::Vector2d left(-chord.y() / d, chord.x() / d);
-  // The centre of the minor arc lies left of the chord for a counter-clockwise move.
-  const double side = (ccw ? 1.0 : -1.0) * (r >= 0 ? 1.0 : -1.0);
-  return Eigen::Vector2d((start + end) / 2 + side * h * left);
-}
-
-double sweep_angle(const Eigen::Vector2d& start, const Eigen::Vector2d& end, const Eigen::Vector2d& centre, bool ccw) {
-  const double a0 = std::atan2(start.y() - centre.y(), start.x() - centre.x());
-  const double a1 = std::atan2(end.y() - centre.y(), end.x() - centre.x());
-  double s = ccw ? a1 - a0 : a0 - a1;
-  while (s <= 1e-12) s += 2 * kPi;
-  while (s > 2 * kPi + 1e-12) s -= 2 * kPi;
-  return s;
-}
-
-double angle_degrees(const Eigen::Vector2d& p, const Eigen::Vector2d& centre) {
-  double a = std::atan2(p.y() - centre.y(), p.x() - centre.x()) * 180.0 / kPi;
-  if (a < 0) a += 360.0;
-  if (a >= 360.0) a -= 360.0;
-  return clean(a);
-}
-
 double clean(double v) {
   const double scaled = v * 1e9;
   double rounded;

@@ -1,41 +1,24 @@
-// Arc geometry in a working plane, with Eigen: centre from R, sweep, angles.
+// The working planes and arc directions under the model's names (they are the stream's), and how
+// the model rounds printed values and reads integer words.
 #pragma once
 
 #include <Eigen/Dense>
-#include <optional>
 
 #include "toolpath/geometry.hpp"
 
 namespace pikocnc {
 
-// G17, G18, G19: the planes, their in-plane axes (first, second) and normal (helix) axis are the
-// stream's (toolpath/geometry.hpp), so the model and the filters cannot disagree on a plane.
+// G17, G18, G19: the planes, their in-plane axes (first, second) and normal (helix) axis, and the
+// arc directions are the stream's (toolpath/geometry.hpp), so the model and the filters cannot
+// disagree on a plane.
 using Plane = toolpath::geometry::Plane;
 using PlaneAxes = toolpath::geometry::PlaneAxes;
+using Direction = toolpath::geometry::Direction;
 
 inline PlaneAxes axes_of(Plane p) { return toolpath::geometry::axes(p); }
 using toolpath::geometry::plane_name;
 
-constexpr double kPi = 3.14159265358979323846;
-
-// The 2-D coordinates of `p` in the plane.
-inline Eigen::Vector2d in_plane(const Eigen::Vector3d& p, Plane plane) {
-  const PlaneAxes a = axes_of(plane);
-  return {p[a.first], p[a.second]};
-}
-
-// Centre of the arc of radius |r| from `start` to `end` (2-D, in-plane): r > 0 the arc of at most
-// 180 degrees, r < 0 the larger one. nullopt when the chord is longer than 2|r| by more than `tolerance`
-// (within the tolerance the half circle is used).
-std::optional<Eigen::Vector2d> centre_from_radius(const Eigen::Vector2d& start, const Eigen::Vector2d& end,
-                                                  double r, bool ccw, double tolerance);
-
-// Swept angle (radians, > 0) from `start` to `end` around `centre`, turning counter-clockwise when
-// `ccw`. Equal start and end angles give a full circle.
-double sweep_angle(const Eigen::Vector2d& start, const Eigen::Vector2d& end, const Eigen::Vector2d& centre, bool ccw);
-
-// Angle of `p` around `centre` in degrees, in [0, 360).
-double angle_degrees(const Eigen::Vector2d& p, const Eigen::Vector2d& centre);
+using toolpath::geometry::in_plane;
 
 // Rounds to 1e-9 (a nanometre) and turns -0 into 0, so printed values are short and stable.
 double clean(double v);

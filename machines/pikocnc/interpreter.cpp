@@ -81,7 +81,7 @@ void Interpreter::preview_chain() {
   // Everything the lines ahead may change is kept and put back; the file is read again later.
   const State state = s_;
   const std::vector<Loop> loops = loops_;
-  const LineReader::Mark mark = lines_.mark();
+  const ncmodel::LineReader::Mark mark = lines_.mark();
   const std::size_t line = line_, executed = executed_, column = motion_column_;
   const int restarts = restarts_left_;
   const double pitch = thread_pitch_;

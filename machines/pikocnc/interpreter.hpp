@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "machines/ncmodel/line_reader.hpp"
 #include "machines/pikocnc/codes.hpp"
 #include "machines/pikocnc/compensation.hpp"
 #include "machines/pikocnc/diagnostics.hpp"
 #include "machines/pikocnc/emitter.hpp"
 #include "machines/pikocnc/lexer.hpp"
-#include "machines/pikocnc/line_reader.hpp"
 #include "machines/pikocnc/motion.hpp"
 #include "machines/pikocnc/options.hpp"
 
@@ -119,7 +119,7 @@ private:
 
   Options options_;
   std::string file_;
-  LineReader lines_;
+  ncmodel::LineReader lines_;
   Diagnostics diagnostics_;
   Diagnostics quiet_{0};
   Emitter emitter_;
@@ -135,10 +135,10 @@ private:
   bool started_ = false;
   bool finished_ = false;
   bool g115_seen_ = false;
-  LineReader::Mark program_start_;
+  ncmodel::LineReader::Mark program_start_;
   int restarts_left_ = 0;
   struct Loop {
-    LineReader::Mark body;
+    ncmodel::LineReader::Mark body;
     long long remaining;
     std::size_t line;
     std::size_t column;  // of the G25, for the warning when no G125 closes it

@@ -27,10 +27,11 @@ struct Move {
   Eigen::Vector3d from = Eigen::Vector3d::Zero();  // program frame, or work frame when `in_work`
   Eigen::Vector3d to = Eigen::Vector3d::Zero();
   double a = 0.0, b = 0.0;                         // work A, B at the end
-  // arcs: centre (its normal coordinate is the start's), plane, direction, swept angle in radians
+  // arcs: centre (its normal coordinate is the start's), plane, direction and degrees swept, in
+  // (0, 360], as the stream's arcs have them (arc_of)
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   Plane plane = Plane::XY;
-  bool ccw = false;
+  Direction direction = Direction::CW;
   double sweep = 0.0;
   double feed = 0.0;
   double pitch = 0.0;          // Thread
@@ -40,5 +41,17 @@ struct Move {
   bool compensated = false;    // geometry moved by G41/G42
   Eigen::Vector3d programmed = Eigen::Vector3d::Zero();  // compensated: the programmed end point
 };
+
+// An arc move as the stream's arc from `from` to `to`: its radius is the start's distance from the
+// centre, its sweep the move's (which decides a full circle, not the points).
+inline toolpath::geometry::Arc arc_of(const Move& m) {
+  return {.start = m.from,
+          .end = m.to,
+          .centre = m.centre,
+          .radius = (in_plane(m.from, m.plane) - in_plane(m.centre, m.plane)).norm(),
+          .sweep = m.sweep,
+          .plane = m.plane,
+          .direction = m.direction};
+}
 
 }  // namespace pikocnc

@@ -1,8 +1,7 @@
 #include "machines/pikocnc/offset.hpp"
 
 #include <cmath>
-
-#include "machines/pikocnc/geometry.hpp"
+#include <numbers>
 
 namespace pikocnc {
 namespace {
@@ -12,22 +11,26 @@ Eigen::Vector2d left_of(const Eigen::Vector2d& d) { return {-d.y(), d.x()}; }
 // Tolerance for "the carriers touch": a tangent line or circle meets in one point.
 constexpr double kTouch = 1e-9;
 
+constexpr double kDegree = std::numbers::pi / 180.0;
+
 }  // namespace
 
 double OffsetElement::param(const Eigen::Vector2d& p, double hint) const {
   if (!arc) return (p - start).dot(dir);
   const Eigen::Vector2d s = start - centre, q = p - centre;
-  double a = std::atan2(cross2(s, q), s.dot(q));  // signed angle from start, counter-clockwise
+  double a = std::atan2(cross2(s, q), s.dot(q)) / kDegree;  // signed angle from start, counter-clockwise
   if (!ccw) a = -a;
-  while (a - hint > kPi) a -= 2 * kPi;
-  while (hint - a > kPi) a += 2 * kPi;
+  while (a - hint > 180.0) a -= 360.0;
+  while (hint - a > 180.0) a += 360.0;
   return a;
 }
+
+double OffsetElement::distance(double dt) const { return arc ? dt * kDegree * radius : dt; }
 
 Eigen::Vector2d OffsetElement::point(double t) const {
   if (!arc) return start + t * dir;
   const Eigen::Vector2d s = start - centre;
-  const double a = ccw ? t : -t;
+  const double a = (ccw ? t : -t) * kDegree;
   const double c = std::cos(a), si = std::sin(a);
   return centre + Eigen::Vector2d(c * s.x() - si * s.y(), si * s.x() + c * s.y());
 }

@@ -22,11 +22,13 @@ struct OffsetElement {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   double radius = 0.0;  // after offsetting; <= 0 when the tool does not fit inside the arc
   bool ccw = false;
-  double sweep = 0.0;   // radians, > 0
+  double sweep = 0.0;   // degrees, > 0
 
-  // Position along the element: distance from `start` (line) or angle swept from `start` (arc).
+  // Position along the element: distance from `start` (line) or degrees swept from `start` (arc).
   // The end is at end_param().
   double end_param() const { return arc ? sweep : length; }
+  // A parameter difference as a distance along the element.
+  double distance(double dt) const;
   // The parameter of `p` (a point on the carrier); for arcs the value nearest to `hint` among the
   // turns, so a point just before the start reads as a small negative angle.
   double param(const Eigen::Vector2d& p, double hint) const;
@@ -38,7 +40,7 @@ struct OffsetElement {
 
 // The programmed line a -> b offset by `offset` (see OffsetElement); a and b must differ.
 OffsetElement offset_line(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double offset);
-// The programmed arc a -> b around `centre` (sweep in radians) offset by `offset`; the offset
+// The programmed arc a -> b around `centre` (sweep in degrees) offset by `offset`; the offset
 // radius is R - offset for a counter-clockwise arc and R + offset for a clockwise one.
 OffsetElement offset_arc(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& centre,
                          bool ccw, double sweep, double offset);

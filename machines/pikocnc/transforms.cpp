@@ -1,13 +1,14 @@
 #include "machines/pikocnc/transforms.hpp"
 
 #include <cmath>
+#include <numbers>
 
 namespace pikocnc {
 namespace {
 
 Eigen::Matrix3d about(int axis, double degrees) {
   const Eigen::Vector3d unit = Eigen::Vector3d::Unit(axis);
-  return Eigen::AngleAxisd(degrees * kPi / 180.0, unit).toRotationMatrix();
+  return Eigen::AngleAxisd(degrees * std::numbers::pi / 180.0, unit).toRotationMatrix();
 }
 
 }  // namespace

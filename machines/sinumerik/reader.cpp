@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -18,10 +19,9 @@
 
 #include <Eigen/Core>
 
-#include "machines/pikocnc/geometry.hpp"
 #include "machines/ncmodel/block_text.hpp"
+#include "machines/ncmodel/line_reader.hpp"
 #include "machines/ncmodel/motion_out.hpp"
-#include "machines/pikocnc/line_reader.hpp"
 #include "toolpath/error.hpp"
 #include "toolpath/geometry.hpp"
 #include "toolpath/value.hpp"
@@ -63,11 +63,11 @@ struct Source {
   fs::path path;
   std::string name;  // as messages show it
   std::unique_ptr<std::istream> stream;
-  std::unique_ptr<pikocnc::LineReader> lines;
-  std::map<std::string, pikocnc::LineReader::Mark, std::less<>> labels;  // upper case, seen so far
+  std::unique_ptr<ncmodel::LineReader> lines;
+  std::map<std::string, ncmodel::LineReader::Mark, std::less<>> labels;  // upper case, seen so far
   std::size_t repeats_left = 0;  // further passes of a call with P
-  pikocnc::LineReader::Mark start;
-  pikocnc::LineReader::Mark before;  // where the line read last starts (a label's block)
+  ncmodel::LineReader::Mark start;
+  ncmodel::LineReader::Mark before;  // where the line read last starts (a label's block)
 };
 
 // The values of `X=AC(3)`, `I=IC(-1)`, `X12.5`: absolute (AC), incremental (IC) or as the mode says.
@@ -162,7 +162,7 @@ struct SinumerikReader::Impl {
     s.path = p;
     s.name = name;
     s.stream = std::move(in);
-    s.lines = std::make_unique<pikocnc::LineReader>(*s.stream, name);
+    s.lines = std::make_unique<ncmodel::LineReader>(*s.stream, name);
     s.start = s.lines->mark();
     s.repeats_left = repeats - 1;
     stack.push_back(std::move(s));
@@ -253,8 +253,8 @@ struct SinumerikReader::Impl {
         if (!c.eat(')')) throw BlockError{c.column(), "expected `)`"};
         if (name == "ABS") return std::abs(v);
         if (name == "SQRT") return std::sqrt(v);
-        if (name == "SIN") return std::sin(v * pikocnc::kPi / 180);
-        if (name == "COS") return std::cos(v * pikocnc::kPi / 180);
+        if (name == "SIN") return std::sin(v * std::numbers::pi / 180);
+        if (name == "COS") return std::cos(v * std::numbers::pi / 180);
         if (name == "TRUNC") return std::trunc(v);
         if (name == "ROUND") return std::round(v);
         throw BlockError{col, fmt::format("the function {} is not modelled", name)};
@@ -688,11 +688,10 @@ struct SinumerikReader::Impl {
     const geo::PlaneAxes ax = geo::axes(plane);
     Eigen::Vector3d centre = pos;
     if (b.cr) {
-      const auto c2 = pikocnc::centre_from_radius(pikocnc::in_plane(pos, plane), pikocnc::in_plane(to, plane),
-                                                  *b.cr * length_unit(), ccw, options.arc_tolerance);
-      if (!c2) throw BlockError{1, fmt::format("CR={} cannot join the start and the end point", *b.cr)};
-      centre[ax.first] = c2->x();
-      centre[ax.second] = c2->y();
+      const auto c = geo::centre_from_radius(pos, to, *b.cr * length_unit(), plane,
+                                             ccw ? geo::Direction::CCW : geo::Direction::CW, options.arc_tolerance);
+      if (!c) throw BlockError{1, fmt::format("CR={} cannot join the start and the end point", *b.cr)};
+      centre = *c;
     } else {
       bool any = false;
       for (int a : {ax.first, ax.second}) {
@@ -782,7 +781,7 @@ struct SinumerikReader::Impl {
     // Forward: read on to the label's block (blocks in between are skipped, not executed).
     std::string_view text;
     for (;;) {
-      const pikocnc::LineReader::Mark at = s.lines->mark();
+      const ncmodel::LineReader::Mark at = s.lines->mark();
       if (!s.lines->next(text)) throw BlockError{j.column, fmt::format("GOTOF: no label {} after this block", j.label)};
       if (label_of(text) == j.label) {
         s.lines->seek(at);

@@ -33,14 +33,15 @@ TEST(PikoOffset, LineMovesToTheLeftForPositiveOffset) {
 
 TEST(PikoOffset, ArcRadiusShrinksOnTheInsideOfTheTurn) {
   // counter-clockwise quarter circle of radius 5 around the origin, left offset 1: radius 4
-  const auto ccw = pikocnc::offset_arc({5, 0}, {0, 5}, {0, 0}, true, M_PI / 2, 1);
+  const auto ccw = pikocnc::offset_arc({5, 0}, {0, 5}, {0, 0}, true, 90, 1);
   EXPECT_NEAR(ccw.radius, 4, kTol);
   EXPECT_NEAR((ccw.end - Vector2d(0, 4)).norm(), 0, kTol);
-  EXPECT_NEAR(ccw.param({0, 4}, ccw.end_param()), M_PI / 2, kTol);
-  EXPECT_NEAR(ccw.param(ccw.point(-0.1), 0), -0.1, kTol);  // just before the start reads negative
-  const auto cw = pikocnc::offset_arc({0, 5}, {5, 0}, {0, 0}, false, M_PI / 2, 1);
+  EXPECT_NEAR(ccw.param({0, 4}, ccw.end_param()), 90, kTol);
+  EXPECT_NEAR(ccw.param(ccw.point(-5), 0), -5, kTol);  // just before the start reads negative
+  EXPECT_NEAR(ccw.distance(90), 2 * M_PI, kTol);  // a quarter of the radius-4 circle
+  const auto cw = pikocnc::offset_arc({0, 5}, {5, 0}, {0, 0}, false, 90, 1);
   EXPECT_NEAR(cw.radius, 6, kTol);
-  EXPECT_NEAR((cw.point(M_PI / 4) - Vector2d(6 / kS2, 6 / kS2)).norm(), 0, kTol);
+  EXPECT_NEAR((cw.point(45) - Vector2d(6 / kS2, 6 / kS2)).norm(), 0, kTol);
 }
 
 struct CrossingCase {
@@ -50,7 +51,7 @@ struct CrossingCase {
 };
 
 pikocnc::OffsetElement circle(Vector2d c, double r) {
-  return pikocnc::offset_arc(c + Vector2d(r, 0), c + Vector2d(r, 0), c, true, 2 * M_PI, 0);
+  return pikocnc::offset_arc(c + Vector2d(r, 0), c + Vector2d(r, 0), c, true, 360, 0);
 }
 
 TEST(PikoOffset, CrossingsOfCarriers) {

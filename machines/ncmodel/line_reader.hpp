@@ -1,5 +1,5 @@
 // Reads a program one line at a time from a stream, in large chunks, without loading the file.
-// Loops (G25/G125) and M99 jump back with mark()/seek().
+// Loops and subprogram calls (G25/G125 and M99, GOTOB, M98) jump back with mark()/seek().
 #pragma once
 
 #include <cstddef>
@@ -9,7 +9,7 @@
 #include <string_view>
 #include <utility>
 
-namespace pikocnc {
+namespace ncmodel {
 
 class LineReader {
 public:
@@ -41,4 +41,4 @@ private:
   bool at_eof_ = false;
 };
 
-}  // namespace pikocnc
+}  // namespace ncmodel

@@ -1,40 +1,12 @@
-// Arc and transformation vectors of sections 5.3 and 10.
+// Transformation vectors of section 10.
 #include <gtest/gtest.h>
 
-#include "machines/pikocnc/geometry.hpp"
 #include "machines/pikocnc/transforms.hpp"
 
 namespace {
 
-using Eigen::Vector2d;
 using Eigen::Vector3d;
 using pikocnc::Plane;
-
-TEST(PikoGeometry, CentreFromRadius) {
-  struct Case {
-    double x, y, r;
-    bool ccw;
-    Vector2d centre;
-    double sweep_degrees;
-  } cases[] = {
-      {10, 10, 10, true, {0, 10}, 90},    // G3 X10 Y10 R10
-      {10, 10, 10, false, {10, 0}, 90},   // G2 X10 Y10 R10
-      {10, 10, -10, true, {10, 0}, 270},  // G3 X10 Y10 R-10
-      {10, 0, 5, false, {5, 0}, 180},     // half circle
-  };
-  for (const auto& c : cases) {
-    const auto centre = pikocnc::centre_from_radius({0, 0}, {c.x, c.y}, c.r, c.ccw, 0.002);
-    ASSERT_TRUE(centre);
-    EXPECT_NEAR((*centre - c.centre).norm(), 0, 1e-12);
-    EXPECT_NEAR(pikocnc::sweep_angle({0, 0}, {c.x, c.y}, *centre, c.ccw) * 180 / pikocnc::kPi, c.sweep_degrees, 1e-9);
-  }
-  EXPECT_FALSE(pikocnc::centre_from_radius({0, 0}, {10, 0}, 4.99, true, 0.002));
-  EXPECT_TRUE(pikocnc::centre_from_radius({0, 0}, {10, 0}, 4.999, true, 0.002));  // within tolerance
-}
-
-TEST(PikoGeometry, FullCircleSweep) {
-  EXPECT_NEAR(pikocnc::sweep_angle({0, 0}, {0, 0}, {5, 0}, false), 2 * pikocnc::kPi, 1e-12);
-}
 
 TEST(PikoTransforms, DocumentVectors) {
   const Vector3d p(10, 20, 5);

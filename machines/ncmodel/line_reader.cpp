@@ -1,10 +1,10 @@
-#include "machines/pikocnc/line_reader.hpp"
+#include "machines/ncmodel/line_reader.hpp"
 
 #include <cstring>
 
 #include "toolpath/error.hpp"
 
-namespace pikocnc {
+namespace ncmodel {
 
 namespace {
 constexpr std::size_t kChunk = 256 * 1024;
@@ -72,4 +72,4 @@ void LineReader::seek(const Mark& where) {
   line_ = where.line;
 }
 
-}  // namespace pikocnc
+}  // namespace ncmodel
