@@ -2,7 +2,7 @@
 
 #include "machines/2xaxiscnc/controller.hpp"
 #include "machines/iso/controller.hpp"
-#include "machines/pikocnc/controller.hpp"
+#include "machines/pikocnc/model/controller.hpp"
 #include "machines/sinumerik/controller.hpp"
 #include "toolpath/value.hpp"
 

@@ -16,7 +16,7 @@
 #include "gppl/gppl.hpp"
 #include "machines/2xaxiscnc/reader.hpp"
 #include "machines/iso/reader.hpp"
-#include "machines/pikocnc/reader.hpp"
+#include "machines/pikocnc/model/reader.hpp"
 #include "lsp/server.hpp"
 #include "machines/registry/registry.hpp"
 #include "machines/sinumerik/reader.hpp"

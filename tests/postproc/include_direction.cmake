@@ -12,6 +12,8 @@ set(rules
   "prp/params|prp/filters/"
   "machines|gppl/ prp/ postproc/ bench/ tests/"
   "machines/pikocnc|machines/2xaxiscnc/ machines/registry/registry"
+  "machines/pikocnc/model|machines/pikocnc/script/"
+  "machines/pikocnc/script|machines/pikocnc/model/"
   "machines/2xaxiscnc|machines/pikocnc/ machines/registry/registry"
   "machines/sinumerik|machines/2xaxiscnc/ machines/iso/ machines/pikocnc/ machines/registry/registry"
   "machines/iso|machines/2xaxiscnc/ machines/sinumerik/ machines/pikocnc/ machines/registry/registry"

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "machines/pikocnc/offset.hpp"
-#include "machines/pikocnc/reader.hpp"
+#include "machines/pikocnc/model/offset.hpp"
+#include "machines/pikocnc/model/reader.hpp"
 
 namespace {
 

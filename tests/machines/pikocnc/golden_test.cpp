@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-#include "machines/pikocnc/reader.hpp"
+#include "machines/pikocnc/model/reader.hpp"
 #include "tests/support/golden_file.hpp"
 #include "toolpath/trace_writer.hpp"
 

@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "machines/pikocnc/codes.hpp"
-#include "machines/pikocnc/lexer.hpp"
-#include "machines/pikocnc/reader.hpp"
+#include "machines/pikocnc/model/codes.hpp"
+#include "machines/pikocnc/model/lexer.hpp"
+#include "machines/pikocnc/model/reader.hpp"
 
 #include <sstream>
 

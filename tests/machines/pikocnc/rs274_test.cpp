@@ -20,7 +20,7 @@
 
 #include <unistd.h>
 
-#include "machines/pikocnc/reader.hpp"
+#include "machines/pikocnc/model/reader.hpp"
 
 namespace {
 

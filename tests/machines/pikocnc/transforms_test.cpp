@@ -1,7 +1,7 @@
 // Transformation vectors of section 10.
 #include <gtest/gtest.h>
 
-#include "machines/pikocnc/transforms.hpp"
+#include "machines/pikocnc/model/transforms.hpp"
 
 namespace {
 

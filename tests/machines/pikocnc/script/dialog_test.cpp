@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "machines/pikocnc/reader.hpp"
+#include "machines/pikocnc/model/reader.hpp"
 #include "machines/pikocnc/script/script.hpp"
 
 namespace {

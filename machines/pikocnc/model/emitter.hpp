@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "machines/pikocnc/motion.hpp"
+#include "machines/pikocnc/model/motion.hpp"
 #include "toolpath/command.hpp"
 
 namespace pikocnc {

@@ -1,4 +1,4 @@
-#include "machines/pikocnc/compensation.hpp"
+#include "machines/pikocnc/model/compensation.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "machines/pikocnc/geometry.hpp"
+#include "machines/pikocnc/model/geometry.hpp"
 
 #include <cmath>
 

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "machines/pikocnc/interpreter.hpp"
+#include "machines/pikocnc/model/interpreter.hpp"
 
 namespace pikocnc {
 

@@ -1,4 +1,4 @@
-#include "machines/pikocnc/transforms.hpp"
+#include "machines/pikocnc/model/transforms.hpp"
 
 #include <cmath>
 #include <numbers>

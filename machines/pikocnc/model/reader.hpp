@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
-#include "machines/pikocnc/diagnostics.hpp"
-#include "machines/pikocnc/options.hpp"
+#include "machines/pikocnc/model/diagnostics.hpp"
+#include "machines/pikocnc/model/options.hpp"
 #include "toolpath/error.hpp"
 #include "toolpath/source.hpp"
 

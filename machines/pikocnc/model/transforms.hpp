@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "machines/pikocnc/geometry.hpp"
+#include "machines/pikocnc/model/geometry.hpp"
 
 namespace pikocnc {
 

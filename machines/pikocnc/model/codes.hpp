@@ -6,8 +6,8 @@
 #include <span>
 #include <string_view>
 
-#include "machines/pikocnc/dialect.hpp"
-#include "machines/pikocnc/lexer.hpp"
+#include "machines/pikocnc/model/dialect.hpp"
+#include "machines/pikocnc/model/lexer.hpp"
 
 namespace pikocnc {
 

@@ -1,11 +1,11 @@
-#include "machines/pikocnc/reader.hpp"
+#include "machines/pikocnc/model/reader.hpp"
 
 #include <fstream>
 #include <sstream>
 #include <initializer_list>
 #include <utility>
 
-#include "machines/pikocnc/interpreter.hpp"
+#include "machines/pikocnc/model/interpreter.hpp"
 
 namespace pikocnc {
 

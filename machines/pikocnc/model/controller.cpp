@@ -1,11 +1,11 @@
-#include "machines/pikocnc/controller.hpp"
+#include "machines/pikocnc/model/controller.hpp"
 
 #include <array>
 
 #include "machines/ncmodel/sample_program.hpp"
 #include "machines/ncmodel/tool_table.hpp"
-#include "machines/pikocnc/dialect.hpp"
-#include "machines/pikocnc/reader.hpp"
+#include "machines/pikocnc/model/dialect.hpp"
+#include "machines/pikocnc/model/reader.hpp"
 #include "machines/registry/report_at_end.hpp"
 #include "toolpath/value.hpp"
 

@@ -5,8 +5,8 @@
 #include <Eigen/Dense>
 #include <cstddef>
 
-#include "machines/pikocnc/geometry.hpp"
-#include "machines/pikocnc/transforms.hpp"
+#include "machines/pikocnc/model/geometry.hpp"
+#include "machines/pikocnc/model/transforms.hpp"
 
 namespace pikocnc {
 

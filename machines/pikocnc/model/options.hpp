@@ -7,7 +7,7 @@
 #include <map>
 #include <set>
 
-#include "machines/pikocnc/dialect.hpp"
+#include "machines/pikocnc/model/dialect.hpp"
 
 namespace pikocnc {
 

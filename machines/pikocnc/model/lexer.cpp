@@ -1,5 +1,5 @@
 // One pass over the line: blanks may sit anywhere, even inside a number (`Y 30,2` is Y30.2).
-#include "machines/pikocnc/lexer.hpp"
+#include "machines/pikocnc/model/lexer.hpp"
 
 #include <fmt/format.h>
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "machines/pikocnc/interpreter_detail.hpp"
+#include "machines/pikocnc/model/interpreter_detail.hpp"
 
 namespace pikocnc {
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "machines/pikocnc/interpreter_detail.hpp"
+#include "machines/pikocnc/model/interpreter_detail.hpp"
 
 namespace pikocnc {
 

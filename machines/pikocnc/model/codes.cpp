@@ -1,4 +1,4 @@
-#include "machines/pikocnc/codes.hpp"
+#include "machines/pikocnc/model/codes.hpp"
 
 #include <array>
 #include <iterator>

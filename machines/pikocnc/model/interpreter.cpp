@@ -1,10 +1,10 @@
 // The line loop and the dispatcher: which code owns which words (section 2.2) and the order of
 // execution inside a line (section 2.3). The steps themselves live in exec_*.cpp.
-#include "machines/pikocnc/interpreter.hpp"
+#include "machines/pikocnc/model/interpreter.hpp"
 
 #include <fmt/format.h>
 
-#include "machines/pikocnc/interpreter_detail.hpp"
+#include "machines/pikocnc/model/interpreter_detail.hpp"
 
 namespace pikocnc {
 

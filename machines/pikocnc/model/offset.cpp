@@ -1,4 +1,4 @@
-#include "machines/pikocnc/offset.hpp"
+#include "machines/pikocnc/model/offset.hpp"
 
 #include <cmath>
 #include <numbers>

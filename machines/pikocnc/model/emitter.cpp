@@ -1,4 +1,4 @@
-#include "machines/pikocnc/emitter.hpp"
+#include "machines/pikocnc/model/emitter.hpp"
 
 #include <fmt/format.h>
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "machines/pikocnc/diagnostics.hpp"
+#include "machines/pikocnc/model/diagnostics.hpp"
 
 namespace pikocnc {
 

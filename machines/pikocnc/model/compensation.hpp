@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "machines/pikocnc/diagnostics.hpp"
-#include "machines/pikocnc/emitter.hpp"
-#include "machines/pikocnc/motion.hpp"
-#include "machines/pikocnc/offset.hpp"
+#include "machines/pikocnc/model/diagnostics.hpp"
+#include "machines/pikocnc/model/emitter.hpp"
+#include "machines/pikocnc/model/motion.hpp"
+#include "machines/pikocnc/model/offset.hpp"
 
 namespace pikocnc {
 

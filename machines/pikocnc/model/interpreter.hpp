@@ -11,13 +11,13 @@
 #include <vector>
 
 #include "machines/ncmodel/line_reader.hpp"
-#include "machines/pikocnc/codes.hpp"
-#include "machines/pikocnc/compensation.hpp"
-#include "machines/pikocnc/diagnostics.hpp"
-#include "machines/pikocnc/emitter.hpp"
-#include "machines/pikocnc/lexer.hpp"
-#include "machines/pikocnc/motion.hpp"
-#include "machines/pikocnc/options.hpp"
+#include "machines/pikocnc/model/codes.hpp"
+#include "machines/pikocnc/model/compensation.hpp"
+#include "machines/pikocnc/model/diagnostics.hpp"
+#include "machines/pikocnc/model/emitter.hpp"
+#include "machines/pikocnc/model/lexer.hpp"
+#include "machines/pikocnc/model/motion.hpp"
+#include "machines/pikocnc/model/options.hpp"
 
 namespace pikocnc {
 
