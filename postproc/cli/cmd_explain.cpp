@@ -6,6 +6,7 @@
 
 #include "postproc/cli/cli.hpp"
 #include "postproc/cli/cli_support.hpp"
+#include "postproc/cli/explain_html.hpp"
 #include "postproc/engine/slot_marker.hpp"
 
 namespace postproc::cli {
@@ -50,13 +51,24 @@ int run_explain(const Arguments& args, std::ostream& out, std::ostream& err) {
   Input input = Input::open(args.positional()[0]);
   OutputFiles files(".", OutputFiles::LineEnd::LF, true);
   Explainer explainer(out, std::filesystem::path(engine_opts.post).filename().string());
+  ExplainPage page(args.positional()[0], engine_opts.post);
+  const bool html = args.has("--html");
   RunOptions options = run_options(input, err);
   TraceOutput trace(args, err);
   trace.apply(options);
-  options.observer = &explainer;
+  if (html) {
+    options.observer = &page;
+    options.posted = [&page](const toolpath::Command& c) { page.posted(c); };
+  } else {
+    options.observer = &explainer;
+  }
   Progress progress(err, args.has("--quiet"), input, args.has("--progress"));
   options.progress = [&](std::size_t n) { progress.update(n); };
   engine.run(*input.reader, files, options);
+  if (html) {
+    write_file_replacing(args.value("--html"), page.html());
+    out << fmt::format("{}: wrote {}\n", args.positional()[0], args.value("--html"));
+  }
   return kOk;
 }
 
@@ -65,9 +77,10 @@ int run_explain(const Arguments& args, std::ostream& out, std::ostream& err) {
 Subcommand explain_command() {
   std::vector<OptionSpec> options = engine_option_specs();
   options.push_back({"--quiet", "-q", false, "no progress bar and no `input` log lines"});
+  options.push_back({"--html", "", true, "write a self-contained page instead: NC lines, the post's source and a plot, linked"});
   return {
       "explain",
-      "postproc explain --post P.gpp [--prp P.prp] JOB.trace",
+      "postproc explain --post P.gpp [--prp P.prp] [--html PAGE.html] JOB.trace",
       "Post a job and print each output line beside the command and GPP procedure that produced it.",
       options,
       run_explain,
