@@ -692,10 +692,12 @@ struct IsoReader::Impl {
           scale[a] = x->value;
         }
     } else if (machine) {
-      std::array<std::optional<double>, 3> axes;
-      for (std::size_t a = 0; a < 3; ++a)
+      std::array<std::optional<double>, 3> axes, rotary;
+      for (std::size_t a = 0; a < 3; ++a) {
         if (const Word* x = find(w, "XYZ"[a])) axes[a] = x->value * unit();
-      out.machine_move(axes);
+        if (const Word* r = find(w, "ABC"[a])) rotary[a] = r->value;  // degrees, not scaled by G20
+      }
+      out.machine_move(axes, rotary);
     } else if (new_cycle) {
       define_cycle(*new_cycle, w);
     } else {

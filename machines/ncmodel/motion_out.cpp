@@ -120,11 +120,17 @@ void MotionOut::compensation(std::string_view side) {
   add("@compensation").set(K::side, Value::make_enum(std::string(side)));
 }
 
-void MotionOut::machine_move(const std::array<std::optional<double>, 3>& axes) {
+void MotionOut::machine_move(const std::array<std::optional<double>, 3>& axes,
+                             const std::array<std::optional<double>, 3>& rotary) {
   Command& c = add("@machine_move");
-  static constexpr std::array<K, 3> kNames = {K::xpos, K::ypos, K::zpos};
+  static constexpr std::array<K, 3> kNames = {K::xpos, K::ypos, K::zpos}, kRotary = {K::apos, K::bpos, K::cpos};
   for (std::size_t i = 0; i < 3; ++i)
     if (axes[i]) number(c, kNames[i], *axes[i]);
+  for (std::size_t i = 0; i < 3; ++i)
+    if (rotary[i]) {
+      rotary_[i] = *rotary[i];
+      number(c, kRotary[i], *rotary[i]);
+    }
 }
 
 void MotionOut::end_program() { position_words(add("@end_program"), position_); }

@@ -47,8 +47,11 @@ public:
   void message(std::string text);
   void compensation(std::string_view side);  // COMP_LEFT, COMP_RIGHT, COMP_OFF
   // A move in machine coordinates: where that is in the work frame the program does not say, so the
-  // position stays; the command carries the axes it names (nullopt: not moved).
-  void machine_move(const std::array<std::optional<double>, 3>& axes);
+  // position stays; the command carries the axes it names (nullopt: not moved). A rotary axis named
+  // is turned there (`G53 A0`: no work offset shifts a rotary axis in these programs) and carried
+  // as apos/bpos/cpos.
+  void machine_move(const std::array<std::optional<double>, 3>& axes,
+                    const std::array<std::optional<double>, 3>& rotary = {});
   void end_program();
 
   // One hole of a drilling cycle at the current X Y: a rapid to `approach` (the R level), then by
