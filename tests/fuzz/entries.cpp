@@ -30,6 +30,12 @@
 namespace fuzz {
 namespace {
 
+// A stream buffer that throws everything away (output the entries do not look at).
+struct Discard final : std::streambuf {
+  int overflow(int c) override { return c; }
+  std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+};
+
 // A broken promise of the code (not of the input): a finding.
 [[noreturn]] void broken(const char* what) {
   std::fprintf(stderr, "fuzz: %s\n", what);
@@ -287,21 +293,15 @@ void controllers(std::string_view data) {
 void lsp(std::string_view data) {
   // The bytes are what an editor sends on the server's standard input: frames, headers, JSON.
   // Every request gets an answer or an error; nothing the client sends may escape as an exception.
-  struct Discard final : std::streambuf {
-    int overflow(int c) override { return c; }
-    std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
-  } discard;
+  Discard discard;
   std::ostream nowhere(&discard);
   std::istringstream in{std::string(data)};
   lsp::serve(in, nowhere, nowhere);
 }
 
 void pikocnc_script(std::string_view data) {
-  // A stream buffer that throws the G-code away: a script may write a lot within its step budget.
-  struct Discard final : std::streambuf {
-    int overflow(int c) override { return c; }
-    std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
-  } discard;
+  // The G-code goes nowhere: a script may write a lot within its step budget.
+  Discard discard;
   std::ostream nowhere(&discard);
   pikocnc::script::RunInputs inputs;
   inputs.max_steps = 20000;  // bounded: loops and recursion stop with an error, never hang
