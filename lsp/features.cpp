@@ -18,7 +18,7 @@ namespace lsp {
 namespace {
 
 // LSP's CompletionItemKind, SymbolKind, DiagnosticSeverity values used here.
-constexpr int kCompletionFunction = 3, kCompletionVariable = 6, kCompletionKeyword = 14;
+constexpr int kCompletionFunction = 3, kCompletionVariable = 6, kCompletionKeyword = 14, kCompletionSnippet = 15;
 constexpr int kSymbolFunction = 12, kSymbolVariable = 13;
 
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
@@ -133,6 +133,33 @@ bool starts_with_ci(std::string_view text, std::string_view prefix) {
   return text.size() >= prefix.size() && toolpath::iequals(text.substr(0, prefix.size()), prefix);
 }
 
+// A display format applied to sample values, as a markdown table (hover, completion).
+std::optional<std::string> format_samples(std::string_view spec) {
+  try {
+    const gppl::DisplayFormat f = gppl::parse_display_format(spec);
+    std::string markdown = fmt::format("display format `'{}'`\n\n| value | printed |\n|---|---|\n", spec);
+    for (double v : {12.5, -0.125, 3.0, 1234.56789, 0.0})
+      markdown += fmt::format("| {} | `{}` |\n", v, gppl::format_value(f, gppl::Value::of_numeric(v)));
+    return markdown;
+  } catch (const std::exception&) {
+    return std::nullopt;  // not a display format
+  }
+}
+
+// Inside the string of a format assignment (`xpos_f = '5.`) or of an item's format (`xpos:'5.`):
+// the byte column just after its opening quote.
+std::optional<std::size_t> format_string_start(std::string_view before_cursor) {
+  if (std::count(before_cursor.begin(), before_cursor.end(), '\'') % 2 == 0) return std::nullopt;
+  const std::size_t quote = before_cursor.rfind('\'');
+  std::string_view head = before_cursor.substr(0, quote);
+  while (!head.empty() && (head.back() == ' ' || head.back() == '\t')) head.remove_suffix(1);
+  if (!head.empty() && head.back() == ':') return quote + 1;
+  if (head.empty() || head.back() != '=') return std::nullopt;
+  head.remove_suffix(1);
+  while (!head.empty() && (head.back() == ' ' || head.back() == '\t')) head.remove_suffix(1);
+  return head.size() >= 2 && toolpath::iequals(head.substr(head.size() - 2), "_f") ? std::optional(quote + 1) : std::nullopt;
+}
+
 }  // namespace
 
 std::vector<json> diagnostics_by_file(Workspace& workspace, const Document& doc) {
@@ -171,6 +198,27 @@ json completion(Workspace&, const Document& doc, const json& params) {
   while (!before.empty() && (before.back() == ' ' || before.back() == '\t')) before.pop_back();
   const bool after_call = before.size() >= 4 && toolpath::iequals(std::string_view(before).substr(before.size() - 4), "call");
   json items = json::array();
+  if (const auto start = format_string_start(text)) {  // display-format snippets, with what they print
+    static constexpr std::pair<std::string_view, std::string_view> kFormats[] = {
+        {"5.3", "up to 5 integer and 3 decimal digits, trailing zeros dropped"},
+        {"5.3(p)", "the same, a decimal point only when there is a fraction"},
+        {"4.3(p)", "feeds"},
+        {"5.0(p)", "whole numbers: block numbers, tool numbers"},
+        {"2.0(p)", "G and M codes"},
+        {"5.3/1", "at least one decimal digit kept"},
+        {"<X> 5.3 <>", "with an affix written before the number"},
+    };
+    for (const auto& [spec, what] : kFormats)
+      if (auto samples = format_samples(spec))
+        items.push_back({{"label", spec},
+                         {"kind", kCompletionSnippet},
+                         {"detail", what},
+                         {"documentation", {{"kind", "markdown"}, {"value", *samples}}},
+                         {"textEdit", {{"range", doc.lines.range(line, static_cast<std::uint32_t>(*start + 1),
+                                                                 static_cast<std::uint32_t>(text.size() - *start))},
+                                       {"newText", spec}}}});
+    return {{"isIncomplete", false}, {"items", std::move(items)}};
+  }
   std::set<std::string> seen;
   auto add = [&](std::string label, int kind, std::string detail, std::string documentation = {}) {
     if (!starts_with_ci(label, (at ? "@" : "") + std::string(prefix)) || !seen.insert(lower(label)).second) return;
@@ -237,15 +285,9 @@ json hover(Workspace& workspace, const Document& doc, const json& params) {
       const std::size_t open = text.rfind('\'', at == 0 ? 0 : at - 1);
       const std::size_t close = open == std::string_view::npos ? open : text.find('\'', open + 1);
       if (open != std::string_view::npos && close != std::string_view::npos && at > open && at <= close) {
-        const std::string_view spec = text.substr(open + 1, close - open - 1);
-        try {
-          const gppl::DisplayFormat f = gppl::parse_display_format(spec);
-          markdown = fmt::format("display format `'{}'`\n\n| value | printed |\n|---|---|\n", spec);
-          for (double v : {12.5, -0.125, 3.0, 1234.56789, 0.0})
-            markdown += fmt::format("| {} | `{}` |\n", v, gppl::format_value(f, gppl::Value::of_numeric(v)));
+        if (auto samples = format_samples(text.substr(open + 1, close - open - 1))) {
+          markdown = std::move(*samples);
           range = doc.lines.range(line, static_cast<std::uint32_t>(open + 1), static_cast<std::uint32_t>(close - open + 1));
-        } catch (const std::exception&) {
-          // not a display format: plain text
         }
       }
     }

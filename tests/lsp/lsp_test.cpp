@@ -280,6 +280,24 @@ TEST(LspEditing, CompletionHoverSymbolsFoldingSignatures) {
   EXPECT_EQ(spans, (std::vector<std::string>{"0-3", "4-10", "12-13", "11-15", "16-19"}));
 }
 
+// Inside the string of a format assignment, completion offers display formats with what they print.
+TEST(LspEditing, DisplayFormatSnippets) {
+  Client c;
+  c.initialize();
+  const std::string uri = "file:///tmp/formats.gpp";
+  c.open(uri, "@init_post\n  xpos_f = '5.\n  {nb, 'X' xpos:'4}\nendp\n");
+  const json r = c.request("textDocument/completion", at(uri, 1, 14))["result"];
+  std::vector<std::string> labels;
+  for (const auto& i : r["items"]) labels.push_back(i["label"]);
+  EXPECT_EQ(labels, (std::vector<std::string>{"5.3", "5.3(p)", "4.3(p)", "5.0(p)", "2.0(p)", "5.3/1", "<X> 5.3 <>"}));
+  const json& p = r["items"][1];
+  EXPECT_EQ(p["textEdit"]["range"], (json{{"start", {{"line", 1}, {"character", 12}}}, {"end", {{"line", 1}, {"character", 14}}}}));
+  EXPECT_NE(p["documentation"]["value"].get<std::string>().find("| 3 | `3` |"), std::string::npos);
+  EXPECT_EQ(c.request("textDocument/completion", at(uri, 2, 17))["result"]["items"].size(), 7u);  // an item's :'format'
+  EXPECT_GT(c.request("textDocument/completion", at(uri, 2, 10))["result"]["items"].size(), 0u);   // 'X': no format
+  EXPECT_NE(c.request("textDocument/completion", at(uri, 2, 10))["result"]["items"][0]["kind"], 15);
+}
+
 TEST(LspEditing, QuickFixes) {
   Client c;
   c.initialize();
