@@ -433,7 +433,9 @@ json code_actions(const Document& doc, const json& params) {
 
 json formatting(const Document& doc, const json& params) {
   const json& options = params.at("options");
-  const std::string unit = options.value("insertSpaces", true) ? std::string(std::size_t(options.value("tabSize", 2)), ' ') : "\t";
+  // A tab size the client may send as anything: 1 to 16 blanks.
+  const auto tab = static_cast<std::size_t>(std::clamp<std::int64_t>(options.value("tabSize", std::int64_t{2}), 1, 16));
+  const std::string unit = options.value("insertSpaces", true) ? std::string(tab, ' ') : "\t";
   json edits = json::array();
   int depth = 0;
   bool in_procedure = false;

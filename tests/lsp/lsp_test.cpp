@@ -352,6 +352,13 @@ TEST(LspEditing, FormattingIndentsBlocksAndNothingElse) {
                                                            {"options", {{"tabSize", 2}, {"insertSpaces", true}}}})["result"];
   EXPECT_EQ(apply_edits("; top\n@line\nif xpos > 0 ; cut\n{nb, 'G1'}\n      else\nwhile blknum < 3\n blknum = blknum + 1\n   endw\n  endif\n\n    endp\n", edits),
             "; top\n@line\n  if xpos > 0 ; cut\n    {nb, 'G1'}\n  else\n    while blknum < 3\n      blknum = blknum + 1\n    endw\n  endif\n\nendp\n");
+  // Whatever tab size the client sends, the indentation stays between 1 and 16 blanks.
+  for (const std::int64_t tab : {std::int64_t{-1}, std::int64_t{1'000'000'000'000}}) {
+    const json odd = c.request("textDocument/formatting", {{"textDocument", {{"uri", uri}}},
+                                                           {"options", {{"tabSize", tab}, {"insertSpaces", true}}}});
+    ASSERT_TRUE(odd["result"].is_array()) << odd.dump();
+    EXPECT_EQ(odd["result"][0]["newText"], std::string(tab < 0 ? 1 : 16, ' '));
+  }
 }
 
 // Every post we ship formats to a post with the same statements (only leading blanks change) and
