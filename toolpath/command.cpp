@@ -10,6 +10,12 @@ const Value* Command::find(std::string_view parameter) const {
   return nullptr;
 }
 
+std::optional<double> Command::number(std::string_view parameter) const {
+  const Value* v = find(parameter);
+  if (!v || (v->kind != ValueKind::Integer && v->kind != ValueKind::Numeric)) return std::nullopt;
+  return v->as_number();
+}
+
 void Command::set(std::string_view parameter, Value value) {
   const ParamKey key = param_key(parameter);
   for (auto& p : parameters) {

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -67,6 +68,8 @@ struct Command {
   // find(ParamKey::xpos) is the same as find("xpos") without any string work: filters and the
   // engine use it on every command. find(ParamKey::none) finds nothing.
   const Value* find(std::string_view parameter) const;
+  // A parameter's number (integer or numeric); nullopt when absent or not a number.
+  std::optional<double> number(std::string_view parameter) const;
   const Value* find(ParamKey key) const {
     if (key == ParamKey::none) return nullptr;
     for (const Parameter& p : parameters) {

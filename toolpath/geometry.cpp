@@ -160,4 +160,21 @@ int chord_count(const Arc& arc, double max_angle, double max_chord, double max_d
   return static_cast<int>(std::min(n, 1e6));  // a runaway count (radius 1e300) stays bounded
 }
 
+Arc arc_of(const Command& c, const Eigen::Vector3d& start, const Eigen::Vector3d& end, double scale) {
+  const Value* plane_word = c.find("arc_plane");
+  const Plane plane = (plane_word ? parse_plane(plane_word->text) : std::nullopt).value_or(Plane::XY);
+  const PlaneAxes ax = axes(plane);
+  Eigen::Vector3d centre = start;
+  if (auto xr = c.number("xcenter_rel"), yr = c.number("ycenter_rel"); xr && yr) {
+    centre[ax.first] += *xr * scale;
+    centre[ax.second] += *yr * scale;
+  } else {
+    centre[ax.first] = c.number("xcenter").value_or(0.0) * scale;
+    centre[ax.second] = c.number("ycenter").value_or(0.0) * scale;
+  }
+  const Value* direction = c.find("arc_direction");
+  return make_arc(start, end, centre, plane, direction && iequals(direction->text, "CW") ? Direction::CW : Direction::CCW,
+                  c.number("arc_size"));
+}
+
 }  // namespace toolpath::geometry

@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "toolpath/command.hpp"
+
 namespace toolpath::geometry {
 
 // Arc planes with their right-handed axis order (G17 XY, G19 YZ, G18 ZX): angles are measured in
@@ -65,6 +67,13 @@ Arc make_arc(const Eigen::Vector3d& start, const Eigen::Vector3d& end, const Eig
 // (within the tolerance the half circle is used).
 std::optional<Eigen::Vector3d> centre_from_radius(const Eigen::Vector3d& start, const Eigen::Vector3d& end,
                                                   double r, Plane plane, Direction direction, double tolerance);
+
+// The arc an @arc command draws from `start` to `end`: its plane (`arc_plane`, XY when absent),
+// direction (`arc_direction`), centre and sweep hint (`arc_size`). The centre is taken relative to
+// the start (`xcenter_rel`/`ycenter_rel`, in-plane) where the command has it: a CAM system rounds
+// the absolute centre and the relative one separately, and the relative one fits the start point.
+// Else `xcenter`/`ycenter`. Centre lengths are multiplied by `scale` (25.4: an inch job in mm).
+Arc arc_of(const Command& c, const Eigen::Vector3d& start, const Eigen::Vector3d& end, double scale = 1.0);
 
 // Offsets (degrees from the start) where the arc crosses a multiple of 90 degrees, strictly
 // inside the arc (a crossing within `tolerance` degrees of either end does not count).

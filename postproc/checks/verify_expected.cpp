@@ -135,27 +135,13 @@ private:
   void arc(const Command& c) {
     if (!(known_[0] && known_[1] && known_[2]))
       throw std::runtime_error(fmt::format("command #{} @arc: the arc starts where the tool's position is not known", c.index));
-    auto plane = geo::parse_plane(word(c, "arc_plane"));
-    if (!plane) plane = geo::Plane::XY;
-    const geo::PlaneAxes ax = geo::axes(*plane);
     const Eigen::Vector3d end = point(c, "xpos", "ypos", "zpos");
-    // The centre relative to the start (I J) where the stream gives it: a CAM system rounds the
-    // absolute centre and the relative one separately, and the relative one fits the start point.
-    Eigen::Vector3d centre = position_;
-    if (auto xr = number(c, "xcenter_rel"), yr = number(c, "ycenter_rel"); xr && yr) {
-      centre[ax.first] += *xr * scale_;
-      centre[ax.second] += *yr * scale_;
-    } else {
-      centre[ax.first] = number_or(c, "xcenter", 0.0) * scale_;
-      centre[ax.second] = number_or(c, "ycenter", 0.0) * scale_;
-    }
-    const auto dir = iequals(word(c, "arc_direction"), "CW") ? geo::Direction::CW : geo::Direction::CCW;
     Motion m = base(c, MotionKind::Arc);
     m.from = position_;
     m.from_known = true;
     m.to = end;
     m.feed = feed(c);
-    m.arc = geo::make_arc(position_, end, centre, *plane, dir, number(c, "arc_size"));
+    m.arc = geo::arc_of(c, position_, end, scale_);
     position_ = end;
     moved_ = true;
     emit(m);

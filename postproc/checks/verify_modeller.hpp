@@ -14,12 +14,7 @@ namespace postproc::verify {
 
 inline bool is(const toolpath::Command& c, std::string_view name) { return toolpath::iequals(c.name, name); }
 
-// A parameter's number (integer or numeric); nullopt when absent or not a number.
-inline std::optional<double> number(const toolpath::Command& c, std::string_view name) {
-  const toolpath::Value* v = c.find(name);
-  if (!v || (v->kind != toolpath::ValueKind::Integer && v->kind != toolpath::ValueKind::Numeric)) return std::nullopt;
-  return v->as_number();
-}
+inline std::optional<double> number(const toolpath::Command& c, std::string_view name) { return c.number(name); }
 
 // Turns commands, in the order the machine runs them, into motion appended to `out`, keeping the
 // tool's position, the spindle state and the drill cycle between commands.

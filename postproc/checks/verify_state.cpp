@@ -36,9 +36,9 @@ bool StateChecks::any_error() const {
 void StateChecks::rotary_travel(const toolpath::Command& c, std::size_t line) {
   static constexpr std::array<std::string_view, 3> kRotary = {"apos", "bpos", "cpos"};
   for (const prp::RotaryLimits& r : rotary_) {
-    const toolpath::Value* v = c.find(kRotary[static_cast<std::size_t>(r.axis - 'A')]);
-    if (!v || (v->kind != toolpath::ValueKind::Numeric && v->kind != toolpath::ValueKind::Integer)) continue;
-    const double a = v->as_number();
+    const std::optional<double> angle = c.number(kRotary[static_cast<std::size_t>(r.axis - 'A')]);
+    if (!angle) continue;
+    const double a = *angle;
     const bool below = a < r.min - kTolerance, above = a > r.max + kTolerance;
     if (below || above)
       find(toolpath::Severity::Error, line,

@@ -18,17 +18,6 @@ namespace {
 
 namespace geo = toolpath::geometry;
 
-std::optional<double> number(const toolpath::Command& c, std::string_view key) {
-  const toolpath::Value* v = c.find(key);
-  if (!v || (v->kind != toolpath::ValueKind::Numeric && v->kind != toolpath::ValueKind::Integer)) return std::nullopt;
-  return v->as_number();
-}
-
-std::string word(const toolpath::Command& c, std::string_view key) {
-  const toolpath::Value* v = c.find(key);
-  return v ? v->text : std::string();
-}
-
 // The page: styles, the layout, and the script that reads the data block. Everything inline.
 constexpr std::string_view kHead = R"html(<!doctype html>
 <html lang="en"><head><meta charset="utf-8">
@@ -285,7 +274,7 @@ void ExplainPage::posted(const toolpath::Command& c) {
   const bool rapid = toolpath::iequals(c.name, "@rapid_move"), line = toolpath::iequals(c.name, "@line"),
              arc = toolpath::iequals(c.name, "@arc");
   if (!rapid && !line && !arc && !toolpath::iequals(c.name, "@drill_point")) {
-    if (auto x = number(c, "xpos"), y = number(c, "ypos"), z = number(c, "zpos"); x && y && z && toolpath::iequals(c.name, "@change_tool")) {
+    if (auto x = c.number("xpos"), y = c.number("ypos"), z = c.number("zpos"); x && y && z && toolpath::iequals(c.name, "@change_tool")) {
       position_ = {*x, *y, *z};  // where the machine is after the change (no motion drawn)
       position_known_ = true;
     }
@@ -294,25 +283,14 @@ void ExplainPage::posted(const toolpath::Command& c) {
   Eigen::Vector3d to = position_;
   static constexpr std::array<std::string_view, 3> kAxes = {"xpos", "ypos", "zpos"};
   for (int a = 0; a < 3; ++a)
-    if (auto v = number(c, kAxes[static_cast<std::size_t>(a)])) to[a] = *v;
+    if (auto v = c.number(kAxes[static_cast<std::size_t>(a)])) to[a] = *v;
   if (!position_known_) {  // the first position: nothing to draw from
     position_ = to;
     position_known_ = true;
     return;
   }
   if (arc) {
-    const auto plane = geo::parse_plane(word(c, "arc_plane")).value_or(geo::Plane::XY);
-    const geo::PlaneAxes ax = geo::axes(plane);
-    Eigen::Vector3d centre = position_;
-    if (auto xr = number(c, "xcenter_rel"), yr = number(c, "ycenter_rel"); xr && yr) {
-      centre[ax.first] += *xr;
-      centre[ax.second] += *yr;
-    } else {
-      centre[ax.first] = number(c, "xcenter").value_or(0);
-      centre[ax.second] = number(c, "ycenter").value_or(0);
-    }
-    const auto direction = toolpath::iequals(word(c, "arc_direction"), "CW") ? geo::Direction::CW : geo::Direction::CCW;
-    const geo::Arc a = geo::make_arc(position_, to, centre, plane, direction, number(c, "arc_size"));
+    const geo::Arc a = geo::arc_of(c, position_, to);
     const int n = std::clamp(geo::chord_count(a, 22.5, 0.0), 1, 16);  // enough for a plot
     Eigen::Vector3d from = position_;
     for (int i = 1; i <= n; ++i) {
