@@ -129,6 +129,17 @@ std::optional<std::uint32_t> enclosing_procedure(const Document& doc, std::uint3
   return best;
 }
 
+// A line's first word in lower case, with its '@' for a procedure header ("@line", "endp", "if");
+// empty for a blank line. What the block structure of a post hangs on.
+std::string leading_word(std::string_view line) {
+  const std::size_t first = line.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const std::string_view t = line.substr(first);
+  std::size_t n = t[0] == '@' ? 1 : 0;
+  while (n < t.size() && ident_char(t[n])) ++n;
+  return lower(t.substr(0, n));
+}
+
 bool starts_with_ci(std::string_view text, std::string_view prefix) {
   return text.size() >= prefix.size() && toolpath::iequals(text.substr(0, prefix.size()), prefix);
 }
@@ -377,13 +388,12 @@ json document_symbols(const Document& doc) {
     std::uint32_t last = u.line;  // a procedure reaches its ENDP
     if (procedure)
       for (std::uint32_t l = u.line + 1; l <= doc.lines.count(); ++l) {
-        std::string_view t = doc.lines.line(l);
-        while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
-        if (starts_with_ci(t, "endp") && (t.size() == 4 || !ident_char(t[4]))) {
+        const std::string word = leading_word(doc.lines.line(l));
+        if (word == "endp") {
           last = l;
           break;
         }
-        if (!t.empty() && t.front() == '@') break;
+        if (!word.empty() && word[0] == '@') break;
       }
     const json selection = doc.lines.range(u.line, u.column, u.length);
     out.push_back({{"name", s.name},
@@ -443,10 +453,7 @@ json formatting(const Document& doc, const json& params) {
     const std::string_view text = doc.lines.line(l);
     const std::size_t first = text.find_first_not_of(" \t");
     if (first == std::string_view::npos) continue;  // blank: as it is
-    const std::string_view t = text.substr(first);
-    std::size_t n = t[0] == '@' ? 1 : 0;
-    while (n < t.size() && ident_char(t[n])) ++n;
-    const std::string word = lower(t.substr(0, n));
+    const std::string word = leading_word(text);
     int level = in_procedure ? 1 + depth : 0;
     if (word.size() > 1 && word[0] == '@') {
       in_procedure = true;
@@ -485,11 +492,7 @@ json folding_ranges(const Document& doc) {
       }
   };
   for (std::uint32_t l = 1; l <= doc.lines.count(); ++l) {
-    std::string_view t = doc.lines.line(l);
-    while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
-    std::size_t n = !t.empty() && t[0] == '@' ? 1 : 0;
-    while (n < t.size() && ident_char(t[n])) ++n;
-    const std::string word = lower(t.substr(0, n));
+    const std::string word = leading_word(doc.lines.line(l));
     if (word.size() > 1 && word[0] == '@') open.emplace_back("@", l);
     else if (word == "if" || word == "while") open.emplace_back(word, l);
     else if (word == "endp") close("@", l + 1);

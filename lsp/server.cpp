@@ -23,18 +23,6 @@ struct RequestError {
   std::string message;
 };
 
-// The byte offset in `lines` of a protocol position (for incremental changes).
-std::size_t offset_of(const Lines& lines, const json& position) {
-  const auto [line, column] = lines.from_protocol(position);
-  const std::string& text = lines.text();
-  std::size_t start = 0;
-  for (std::uint32_t l = 1; l < line && start < text.size(); ++l) {
-    const std::size_t nl = text.find('\n', start);
-    start = nl == std::string::npos ? text.size() : nl + 1;
-  }
-  return std::min<std::size_t>(start + column - 1, text.size());
-}
-
 }  // namespace
 
 struct Server::Impl {
@@ -146,8 +134,8 @@ struct Server::Impl {
           continue;
         }
         const Lines lines(text);
-        const std::size_t begin = offset_of(lines, change.at("range").at("start"));
-        const std::size_t end = std::max(begin, offset_of(lines, change.at("range").at("end")));
+        const std::size_t begin = lines.offset(change.at("range").at("start"));
+        const std::size_t end = std::max(begin, lines.offset(change.at("range").at("end")));
         text.replace(begin, end - begin, change.at("text").get<std::string>());
       }
       changed(workspace.open(doc.uri, std::move(text), params.at("textDocument").value("version", doc.version + 1)));

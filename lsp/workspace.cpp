@@ -3,17 +3,16 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "postproc/checks/post_check.hpp"
 #include "prp/prp.hpp"
+#include "toolpath/bounded_read.hpp"
 #include "toolpath/value.hpp"
 
 namespace lsp {
 namespace {
 
-constexpr std::uintmax_t kMaxDiskFile = 16u << 20;  // an include or machine file larger is not one
+constexpr std::size_t kMaxDiskFile = 16u << 20;  // an include or machine file larger is not one
 
 int hex(char c) {
   if (c >= '0' && c <= '9') return c - '0';
@@ -28,15 +27,13 @@ std::size_t utf8_length(unsigned char lead) {
   return lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC0 ? 2 : 1;
 }
 
+// A file on disk (an include, a machine file), or nullopt when it cannot be read or is too large.
 std::optional<std::string> read_small_file(const std::string& path) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec || size > kMaxDiskFile) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  try {
+    return toolpath::read_file_bounded(path, kMaxDiskFile, "too large for an include or a machine file");
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -114,6 +111,11 @@ json Lines::to_protocol(std::uint32_t line, std::uint32_t column) const {
     byte += utf8_length(lead);
   }
   return {{"line", line == 0 ? 0 : line - 1}, {"character", units}};
+}
+
+std::size_t Lines::offset(const json& position) const {
+  const auto [line, column] = from_protocol(position);
+  return std::min<std::size_t>(starts_[line - 1] + column - 1, text_.size());
 }
 
 json Lines::range(std::uint32_t line, std::uint32_t column, std::uint32_t length) const {

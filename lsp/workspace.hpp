@@ -34,6 +34,8 @@ public:
   std::pair<std::uint32_t, std::uint32_t> from_protocol(const json& position) const;
   json to_protocol(std::uint32_t line, std::uint32_t column) const;
   json range(std::uint32_t line, std::uint32_t column, std::uint32_t length) const;
+  // The byte offset in the text of a protocol position (for incremental changes).
+  std::size_t offset(const json& position) const;
 
 private:
   std::string text_;
