@@ -16,6 +16,7 @@
 #include "gppl/gppl.hpp"
 #include "machines/2xaxiscnc/reader.hpp"
 #include "machines/iso/reader.hpp"
+#include "machines/ncmodel/tool_table.hpp"
 #include "machines/pikocnc/model/reader.hpp"
 #include "lsp/server.hpp"
 #include "machines/registry/registry.hpp"
@@ -290,6 +291,16 @@ void controllers(std::string_view data) {
   }
 }
 
+void tool_table(std::string_view data) {
+  // A malformed line is an InputError naming it; anything else escaping is a finding.
+  try {
+    const ncmodel::ToolTable table = ncmodel::parse_tool_table(data, "fuzz.tbl");
+    for (const auto& [number, t] : table.tools)
+      if (number < 0 || !(t.diameter >= 0)) broken("a tool table kept a negative tool number or diameter");
+  } catch (const toolpath::InputError&) {
+  }
+}
+
 void lsp(std::string_view data) {
   // The bytes are what an editor sends on the server's standard input: frames, headers, JSON.
   // Every request gets an answer or an error; nothing the client sends may escape as an exception.
@@ -338,7 +349,7 @@ Entry entry(std::string_view target) {
       {"trace_reader", trace_reader}, {"gppl_check", gppl_check}, {"gppl_run", gppl_run},
       {"display_format", display_format}, {"prp_loader", prp_loader}, {"pikocnc", pikocnc},
       {"vmid", vmid}, {"twoaxis", twoaxis}, {"pikocnc_script", pikocnc_script}, {"sinumerik", sinumerik},
-      {"iso", iso}, {"controllers", controllers}, {"lsp", lsp},
+      {"iso", iso}, {"controllers", controllers}, {"lsp", lsp}, {"tool_table", tool_table},
   };
   for (const Named& n : kEntries)
     if (n.name == target) return n.entry;

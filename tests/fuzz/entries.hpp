@@ -21,7 +21,8 @@ void sinumerik(std::string_view data);       // read a Sinumerik program back in
 void iso(std::string_view data);             // read a Fanuc/LinuxCNC/Mach3/GRBL program (first byte: which)
 void controllers(std::string_view data);     // every registered controller's reader (bytes 1-2: which, how)
 void pikocnc_script(std::string_view data);
-void lsp(std::string_view data);             // a language server session: framed JSON-RPC messages, replies discarded  // parse, check and run a PikoCNC script, bounded, output discarded
+void lsp(std::string_view data);
+void tool_table(std::string_view data);      // parse a controller tool table (LinuxCNC format)             // a language server session: framed JSON-RPC messages, replies discarded  // parse, check and run a PikoCNC script, bounded, output discarded
 
 // The entry of a target by name (the folder names under regressions/); nullptr when unknown.
 using Entry = void (*)(std::string_view);

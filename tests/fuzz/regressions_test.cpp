@@ -43,7 +43,7 @@ TEST_P(FuzzRegression, RunsThroughItsEntryPoint) {
 // Every target has its folder, so that the list is never empty.
 TEST(FuzzRegression, EveryTargetHasAFolder) {
   for (const char* target : {"trace_reader", "gppl_check", "gppl_run", "display_format", "prp_loader", "pikocnc",
-                             "vmid", "twoaxis", "pikocnc_script", "sinumerik", "iso", "controllers", "lsp"}) {
+                             "vmid", "twoaxis", "pikocnc_script", "sinumerik", "iso", "controllers", "lsp", "tool_table"}) {
     EXPECT_NE(fuzz::entry(target), nullptr) << target;
     EXPECT_TRUE(fs::is_directory(kRoot / target)) << target;
   }
