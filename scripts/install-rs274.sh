@@ -8,7 +8,10 @@ if command -v rs274 >/dev/null 2>&1; then
 fi
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-if ! apt-cache policy linuxcnc-uspace 2>/dev/null | grep -q "Candidate: [0-9]"; then
+# The policy is read whole first: `grep -q` stops reading early, and under pipefail the SIGPIPE it
+# leaves apt-cache with failed the test even when a candidate exists.
+policy=$(apt-cache policy linuxcnc-uspace 2>/dev/null || true)
+if ! grep -q "Candidate: [0-9]" <<<"$policy"; then
   echo "linuxcnc-uspace is not available from the configured apt sources; the cross-check will be skipped" >&2
   exit 1
 fi
