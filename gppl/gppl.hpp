@@ -223,6 +223,12 @@ public:
   const Value& value(VariableId id) const;
   bool active(VariableId id) const;
   bool changed(VariableId id) const;
+  // The type of a variable the post never reads, when that type is fixed: no statement, condition,
+  // generate item or display format of the program names it, and the generator does not use it
+  // (block numbering, default formats). Assigning it a value of exactly that type can neither fail
+  // nor change anything the post writes, so a host may leave it out. nullopt when the post may
+  // read it, when a host value can re-type it, or while a trace stream records host assignments.
+  std::optional<Type> unread_type(VariableId id) const;
 
   // Runs @init_post, then every @init_inc, once.
   RunResult start();

@@ -217,6 +217,17 @@ const Value& Interpreter::value(VariableId id) const {
 
 bool Interpreter::active(VariableId id) const { return state_->host_cell(id).active; }
 
+std::optional<Type> Interpreter::unread_type(VariableId id) const {
+  const State& s = *state_;
+  if (s.trace != nullptr || id >= s.program.globals.size() || s.named_by_program[id]) return std::nullopt;
+  const GlobalVariable& var = s.program.globals[id];
+  // An implicit host variable takes the type of what the host gives it (Interpreter::assign).
+  if (var.group == Group::Implicit || var.cell_count != 1) return std::nullopt;
+  const Cell& c = s.globals[var.first_cell];
+  if (!c.typed) return std::nullopt;
+  return c.value.type;
+}
+
 bool Interpreter::changed(VariableId id) const {
   return state_->host_cell(id).changed;
 }

@@ -36,6 +36,22 @@ Interpreter::State::State(std::shared_ptr<const Program> p, OutputSink& s)
     }
   }
   for (const GlobalVariable& v : program.globals) host_cells.push_back(v.first_cell);
+  // Every read of a global goes through a VarRef (expressions, conditions, items, name_f formats,
+  // group requirements, input targets) or a generator slot; writes are counted too, which is safe.
+  named_by_program.assign(program.globals.size(), false);
+  for (const VarRef& r : program.refs)
+    if (!r.local && r.id < named_by_program.size()) named_by_program[r.id] = true;
+  const SystemSlots& sl = program.slots;
+  const std::uint32_t slot_cells[] = {sl.skipline,      sl.blknum,        sl.blknum_delta, sl.blknum_max,
+                                      sl.blknum_exist,  sl.blknum_gen,    sl.blknum_letter, sl.blknum_f,
+                                      sl.integer_def_f, sl.numeric_def_f, sl.remove_blanks, sl.end_block_text,
+                                      sl.gcode_space,   sl.clear_change_after_gen};
+  for (std::size_t id = 0; id < program.globals.size(); ++id) {
+    const GlobalVariable& v = program.globals[id];
+    for (std::uint32_t cell : slot_cells)
+      if (cell >= v.first_cell && cell < v.first_cell + v.cell_count) named_by_program[id] = true;
+  }
+  if (sl.gcode < named_by_program.size()) named_by_program[sl.gcode] = true;
   format_sites.resize(program.format_sites + 3);
   constant_formats.resize(program.format_specs.size());
   procedure_trace_level.assign(program.procedures.size(), -1);

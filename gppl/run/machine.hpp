@@ -104,6 +104,7 @@ struct Interpreter::State {
   std::vector<int> procedure_trace_level;  // -1: use the default
   std::unordered_map<std::string, int> command_trace_level;  // names without a procedure
   std::vector<std::uint32_t> host_assigned;  // variables the host set since the last call (trace dump)
+  std::vector<bool> named_by_program;        // per program global: a VarRef or a generator slot names it
   std::string trace_remainder;               // a long procedure name's tail, printed on the next line
   int last_header_level = 0;                 // level of the procedure whose header was written last
 

@@ -92,6 +92,13 @@ private:
   std::size_t shown_ = 0;
 };
 
+// The system variables the engine reads back from the post's cells: they are assigned from a
+// command even when the post itself never reads them (ParameterBinding leaves those out).
+// label: LineNumbers::label(); xpos/ypos/zpos: follow_cycle_retreat(); num_user_procs:
+// subroutine numbering; print_file_size: the end of the run.
+constexpr std::array<std::string_view, 6> kReadByEngine{"label", "xpos", "ypos", "zpos", "num_user_procs",
+                                                        "print_file_size"};
+
 class Session {
 public:
   Session(const Engine& engine, std::shared_ptr<const gppl::Program> program, OutputFiles& files,
@@ -104,7 +111,7 @@ public:
         uses_line_functions_(gppl::uses_line_functions(*program)),
         procedures_(gppl::procedures(*program)),
         interpreter_(std::move(program), sink_),
-        binding_(interpreter_, enums_),
+        binding_(interpreter_, enums_, {kReadByEngine.begin(), kReadByEngine.end()}),
         line_numbers_(interpreter_, files, options.observer, [this] {
           return sink_.command_name.empty() ? std::string()
                                             : fmt::format("command #{} {}", sink_.command_index, sink_.command_name);
@@ -123,9 +130,15 @@ public:
     for (const auto& v : gppl::system_variables())
       if (v.source == gppl::VariableSource::Constant && v.type == gppl::Type::Integer)
         if (auto id = interpreter_.find_variable(v.name)) interpreter_.assign(*id, gppl::Value::of_integer(enums_.code(v.name)));
-    prev_command_ = interpreter_.find_variable("prev_command");
-    current_command_ = interpreter_.find_variable("current_command");
-    next_command_ = interpreter_.find_variable("next_command");
+    // A name the post never reads is not assigned (three string copies a command otherwise).
+    auto read_name = [&](std::string_view name) -> std::optional<gppl::VariableId> {
+      auto id = interpreter_.find_variable(name);
+      if (id && interpreter_.unread_type(*id) == gppl::Type::String) return std::nullopt;
+      return id;
+    };
+    prev_command_ = read_name("prev_command");
+    current_command_ = read_name("current_command");
+    next_command_ = read_name("next_command");
     if (prev_command_ && current_command_ && next_command_)
       command_names_ = std::array<gppl::VariableId, 3>{*prev_command_, *current_command_, *next_command_};
     for (const auto* cycle : engine.machine().records("drill_type"))

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <span>
 #include <stdexcept>
 
@@ -11,8 +12,23 @@
 
 namespace postproc {
 
-ParameterBinding::ParameterBinding(gppl::Interpreter& interpreter, Enumerations& enums)
-    : interpreter_(interpreter), enums_(enums), by_key_(toolpath::param_key_count + 1) {}
+ParameterBinding::ParameterBinding(gppl::Interpreter& interpreter, Enumerations& enums, std::vector<std::string> host_reads)
+    : interpreter_(interpreter), enums_(enums), host_reads_(std::move(host_reads)), by_key_(toolpath::param_key_count + 1) {}
+
+namespace {
+
+// The value kind that goes into a variable of type `t` as it is (no conversion); kNoSkip for none.
+std::uint8_t same_kind(gppl::Type t) {
+  switch (t) {
+    case gppl::Type::Integer: return static_cast<std::uint8_t>(toolpath::ValueKind::Integer);
+    case gppl::Type::Numeric: return static_cast<std::uint8_t>(toolpath::ValueKind::Numeric);
+    case gppl::Type::Logical: return static_cast<std::uint8_t>(toolpath::ValueKind::Logical);
+    case gppl::Type::String: return static_cast<std::uint8_t>(toolpath::ValueKind::String);
+  }
+  return ParameterBinding::kNoSkip;
+}
+
+}  // namespace
 
 const ParameterBinding::Slot& ParameterBinding::slot(std::string_view name) {
   auto it = slots_.find(name);
@@ -23,6 +39,8 @@ const ParameterBinding::Slot& ParameterBinding::slot(std::string_view name) {
     s.is_string = p->kind == ParameterKind::String;
   else if (s.id)
     s.is_string = interpreter_.value(*s.id).type == gppl::Type::String;
+  if (s.id && std::none_of(host_reads_.begin(), host_reads_.end(), [&](const std::string& r) { return toolpath::iequals(r, name); }))
+    if (const std::optional<gppl::Type> t = interpreter_.unread_type(*s.id)) s.skipped_kind = same_kind(*t);
   return slots_.emplace(std::string(name), s).first->second;
 }
 

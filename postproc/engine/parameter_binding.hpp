@@ -28,7 +28,12 @@ public:
   struct Slot {
     std::optional<gppl::VariableId> id;
     bool is_string = false;  // the variable is a string: an enumeration word goes in as its text
+    // A value of this kind is left out: the post never reads the variable, which holds exactly
+    // that type (gppl::Interpreter::unread_type), so the assignment could neither fail nor show.
+    // kNoSkip for the rest: other kinds convert, and a conversion may be an error of the job.
+    std::uint8_t skipped_kind = kNoSkip;
   };
+  static constexpr std::uint8_t kNoSkip = 0xff;
   // One binding with the last enumeration word it converted (a word repeats command after command).
   struct Bound {
     std::string name;  // positional bindings only: the name seen at that position
@@ -44,7 +49,8 @@ public:
   // The positional bindings of one command name (names outside the catalogue).
   using Positions = std::vector<Bound>;
 
-  ParameterBinding(gppl::Interpreter& interpreter, Enumerations& enums);
+  // `host_reads`: the variables the host itself reads back (by name), which are always assigned.
+  ParameterBinding(gppl::Interpreter& interpreter, Enumerations& enums, std::vector<std::string> host_reads = {});
 
   // Assigns every parameter of `command` to its variable; `positions` belongs to the command's name.
   // A value the variable cannot take is an error at the parameter's position in the input.
@@ -92,6 +98,7 @@ private:
 
   // A parameter into its post variable, converted as convert() would, without building a Value.
   void assign(Bound& b, const toolpath::Value& v) {
+    if (static_cast<std::uint8_t>(v.kind) == b.slot.skipped_kind) return;
     const gppl::VariableId id = *b.slot.id;
     const gppl::ChangeOverride change = change_override(v.flag);
     if (v.kind == toolpath::ValueKind::Numeric) return interpreter_.assign_numeric(id, v.numeric, change);  // most are
@@ -114,6 +121,7 @@ private:
   gppl::Interpreter& interpreter_;
   Enumerations& enums_;
   std::string input_name_;
+  std::vector<std::string> host_reads_;
   std::vector<Bound> by_key_;  // indexed by ParamKey
   std::unordered_map<std::string, Slot, TransparentHash, std::equal_to<>> slots_;
 };

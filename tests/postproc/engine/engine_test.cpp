@@ -71,6 +71,27 @@ TEST_F(EngineTest, ParametersChangeFlagsAndCommandNames) {
             "@tmatrix @line  X5.");
 }
 
+// Variables the post never reads are left unassigned (ParameterBinding, Interpreter::unread_type),
+// which must not show: a value that would not convert is still an error of the job, the command
+// names still reach a post that reads only one of them, and the output is the same as a post that
+// reads everything.
+TEST_F(EngineTest, UnreadVariablesChangeNothingButSpeed) {
+  const std::string declares_foo = "@init_post\n  global numeric foo\nendp\n";
+  try {
+    post(declares_foo, "@start_of_file\nfoo : 'abc'\n");
+    ADD_FAILURE() << "no error";
+  } catch (const toolpath::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("job.trace:2:7: parameter `foo` of @start_of_file: error 386"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(post(declares_foo + "@start_of_file\n  {nl, 'ok'}\nendp\n", "@start_of_file\nfoo : 2\n"), "\nok");
+  const std::string lines = "@start_of_file\n@line\nxpos : 1\nypos : 0\nzpos : 0\nfeed : 100\n"
+                            "@line\nxpos : 2\nypos : 0\nzpos : 0\nfeed : 100\n";
+  EXPECT_EQ(post("@line\n  {nl, next_command, [' X'xpos]}\nendp\n", lines), "\n@line X1\n X2");
+  EXPECT_EQ(post("@line\n  {nl, [' F'feed], ' ', prev_command}\nendp\n", lines),
+            "\n F100 @start_of_file\n @line");
+}
+
 // A parameter reaches the variable of its name whatever its spelling and position: catalogue names
 // are bound by their interned key, other names by their position in the command, and both bindings
 // follow a command whose parameters come in another order. Enumeration words are compared without case.
