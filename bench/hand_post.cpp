@@ -428,6 +428,34 @@ private:
 
 // ------------------------------------------------------------------ the post
 
+// Where the values of one command's pairs are, by key: their first byte and their length.
+template <int Count>
+struct Values {
+  const char* at[Count];
+  std::uint32_t size[Count];
+};
+
+// A value's text as last seen (up to 8 bytes) and what it gave: the same text gives the same value,
+// and for an axis the same result of the precision filter (the axis was sent where that text put
+// it, so the "barely moved" rule keeps it there). The parse is skipped.
+struct Remembered {
+  std::uint64_t word = 0;
+  std::uint32_t size = 0;  // 0: nothing remembered
+  char flag = 0;
+  std::int64_t milli = 0;
+  double number = 0;
+  Number parsed;
+
+  static std::uint64_t masked(const char* p, std::uint32_t size) {
+    return load8(p) & (size >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * size)) - 1);
+  }
+  bool same(const char* p, std::uint32_t n) const { return size != 0 && n == size && masked(p, n) == word; }
+  void keep(const char* p, std::uint32_t n) {
+    size = n <= 8 ? n : 0;
+    word = masked(p, n);
+  }
+};
+
 // A GPPL variable's value and change memory (the `assigned`/`changed` pair of the interpreter).
 template <class T>
 struct Modal {
@@ -509,7 +537,7 @@ private:
   std::uint64_t at(const char* p) const { return offset_ + static_cast<std::uint64_t>(p - base_); }
   const char* continuation(const char* q, const char* end, const char*& next) const;
   template <int Count, int (*KeyOf)(const char*, std::size_t)>
-  const char* scan_pairs(const char* q, const char* end, const char* (&values)[Count]) const;
+  const char* scan_pairs(const char* q, const char* end, Values<Count>& values) const;
   Number number(const char* value, const char* name) const;
   std::int64_t integer(const char* value, const char* name) const;
   std::string_view text(const char* value) const;  // a string (quotes removed) or a bare word
@@ -559,6 +587,7 @@ private:
   // The PRP's precision filter: where each axis was last sent, in thousandths.
   std::int64_t sent_[3] = {0, 0, 0};
   bool sent_known_[3] = {false, false, false};
+  Remembered remembered_[motion_key_count];  // the motion parameters' last texts
 
   // Program structure: procedures as they come, or one flat job made into procedure 1.
   enum class Shape { unknown, procedures, flat } shape_ = Shape::unknown;
@@ -588,12 +617,12 @@ const char* Post::continuation(const char* q, const char* end, const char*& next
   }
 }
 
-// Scans a command's name:value pairs from q (after `==>`) over its continuation lines; values[k]
-// points at the value of the first pair whose name KeyOf gives k (nullptr: none). Returns where
-// the next command starts.
+// Scans a command's name:value pairs from q (after `==>`) over its continuation lines;
+// values.at[k] points at the value of the first pair whose name KeyOf gives k (nullptr: none),
+// values.size[k] is its length. Returns where the next command starts.
 template <int Count, int (*KeyOf)(const char*, std::size_t)>
-const char* Post::scan_pairs(const char* q, const char* end, const char* (&values)[Count]) const {
-  for (auto& v : values) v = nullptr;
+const char* Post::scan_pairs(const char* q, const char* end, Values<Count>& values) const {
+  for (auto& v : values.at) v = nullptr;
   Window w;
   w.load(q);
   unsigned i = 0;  // where the next pair may start: w.base + i, i < 64
@@ -606,6 +635,14 @@ const char* Post::scan_pairs(const char* q, const char* end, const char* (&value
     }
     i += static_cast<unsigned>(std::countr_zero(solid));
     if ((w.newline >> i) & 1) {  // the end of the line: the command goes on, or the next one starts
+      if (i < 60) {  // `..>` after blanks, inside the window: the next pairs right away
+        const std::uint64_t next_solid = ~w.blank >> (i + 1);
+        const unsigned j = i + 1 + static_cast<unsigned>(std::countr_zero(next_solid));
+        if (next_solid != 0 && j > i + 1 && j + 3 <= 64 && w.base[j] == '.' && w.base[j + 1] == '.' && w.base[j + 2] == '>') {
+          i = j + 3;
+          continue;
+        }
+      }
       const char* next = nullptr;
       const char* const more = continuation(w.base + i, end, next);
       if (!more) return next;
@@ -624,8 +661,12 @@ const char* Post::scan_pairs(const char* q, const char* end, const char* (&value
         name[c + 1] != '\'' && name[c + 1] != '"') {
       if (c == 0) refuse(at(name), "expected name:value");
       const int k = KeyOf(name, c);
-      if (k < Count && values[k] == nullptr) values[k] = name + c + 1;
-      i = value_at + static_cast<unsigned>(std::countr_zero(value_stops));
+      const unsigned value_size = static_cast<unsigned>(std::countr_zero(value_stops));
+      if (k < Count && values.at[k] == nullptr) {
+        values.at[k] = name + c + 1;
+        values.size[k] = value_size;
+      }
+      i = value_at + value_size;
       continue;
     }
     if (i > 0 && colons != 0 && value_at < 64 && name[c + 1] != '\'' && name[c + 1] != '"') {
@@ -637,15 +678,19 @@ const char* Post::scan_pairs(const char* q, const char* end, const char* (&value
     const char* p = name_end(name);
     if (*p != ':' || p == name) refuse(at(name), "expected name:value");
     const int k = KeyOf(name, static_cast<std::size_t>(p - name));
-    ++p;
-    if (k < Count && values[k] == nullptr) values[k] = p;
+    const char* const value = ++p;
     if (*p == '\'' || *p == '"') {
       const char quote = *p++;
       while (*p != quote && *p != '\n') ++p;
       if (*p != quote) refuse(at(name), "a string without its closing quote");
       ++p;
     }
-    w.load(value_end(p));
+    p = value_end(p);
+    if (k < Count && values.at[k] == nullptr) {
+      values.at[k] = value;
+      values.size[k] = static_cast<std::uint32_t>(p - value);
+    }
+    w.load(p);
     i = 0;
   }
 }
@@ -750,18 +795,34 @@ const char* Post::motion(bool arc, const char* q, const char* end) {
   if (flat_call_pending_) open_flat_job();
   if (shape_ == Shape::flat && previous_ == Kind::end_of_job) refuse(command_offset_, "a motion after a flat job's @end_of_job");
   previous_ = arc ? Kind::arc : Kind::line;
-  const char* v[motion_key_count];
-  const char* const next = scan_pairs<motion_key_count, motion_key>(q, end, v);
+  Values<motion_key_count> values;
+  const char* const next = scan_pairs<motion_key_count, motion_key>(q, end, values);
+  const char* const* const v = values.at;
   const char* const what = arc ? "@arc" : "@line";
-  const Number x = number(require(v[m_xpos], "xpos", what), "xpos");
-  const Number y = number(require(v[m_ypos], "ypos", what), "ypos");
-  const Number z = number(require(v[m_zpos], "zpos", what), "zpos");
-  const Number f = number(require(v[m_feed], "feed", what), "feed");
-  xpos_.assign(axis(x, 0), x.flag);
-  ypos_.assign(axis(y, 1), y.flag);
-  zpos_.assign(axis(z, 2), z.flag);
-  feed_.assign(to_double(f), f.flag);
-  feed_text_ = f;
+  static constexpr const char* kAxes[3] = {"xpos", "ypos", "zpos"};
+  Modal<std::int64_t>* const axes[3] = {&xpos_, &ypos_, &zpos_};
+  for (int i = 0; i < 3; ++i) {
+    const char* const text = require(v[m_xpos + i], kAxes[i], what);
+    Remembered& r = remembered_[m_xpos + i];
+    if (!r.same(text, values.size[m_xpos + i])) {
+      const Number n = number(text, kAxes[i]);
+      r.milli = axis(n, i);
+      r.flag = n.flag;
+      r.keep(text, values.size[m_xpos + i]);
+    }
+    axes[i]->assign(r.milli, r.flag);
+  }
+  {
+    const char* const text = require(v[m_feed], "feed", what);
+    Remembered& r = remembered_[m_feed];
+    if (!r.same(text, values.size[m_feed])) {
+      r.parsed = number(text, "feed");
+      r.number = to_double(r.parsed);
+      r.keep(text, values.size[m_feed]);
+    }
+    feed_.assign(r.number, r.parsed.flag);
+    feed_text_ = r.parsed;
+  }
 
   out_.room(kLineRoom);
   if (!arc) {
@@ -780,12 +841,20 @@ const char* Post::motion(bool arc, const char* q, const char* end) {
     return next;
   }
 
-  const Number radius = number(require(v[m_radius], "radius", what), "radius");
-  const Number size = number(require(v[m_arc_size], "arc_size", what), "arc_size");
+  Remembered& radius = remembered_[m_radius];
+  if (const char* text = require(v[m_radius], "radius", what); !radius.same(text, values.size[m_radius])) {
+    radius.milli = filtered_milli(number(text, "radius"), command_offset_);
+    radius.keep(text, values.size[m_radius]);
+  }
+  Remembered& size = remembered_[m_arc_size];
+  if (const char* text = require(v[m_arc_size], "arc_size", what); !size.same(text, values.size[m_arc_size])) {
+    size.number = to_double(number(text, "arc_size"));
+    size.keep(text, values.size[m_arc_size]);
+  }
   const std::string_view direction = text(require(v[m_arc_direction], "arc_direction", what));
   const std::string_view plane = text(require(v[m_arc_plane], "arc_plane", what));
-  const std::int64_t r = filtered_milli(radius, command_offset_);
-  const double sweep = to_double(size);
+  const std::int64_t r = radius.milli;
+  const double sweep = size.number;
   // The PRP's arc filter passes these arcs as they are; the ones it would change are not ours.
   if (r > kMaxArcRadius || !(sweep >= 0.01) || static_cast<double>(r) * sweep * (3.14159 / 180.0) < 10.0)
     refuse(command_offset_, "an arc the PRP would linearise (radius above 2000 mm, or a sweep or length that small)");
@@ -823,8 +892,9 @@ const char* Post::motion(bool arc, const char* q, const char* end) {
 // ---- the other commands
 
 const char* Post::other(Kind kind, const char* q, const char* end) {
-  const char* v[key_count];
-  const char* const next = scan_pairs<key_count, other_key>(q, end, v);
+  Values<key_count> values;
+  const char* const next = scan_pairs<key_count, other_key>(q, end, values);
+  const char* const* const v = values.at;
   if (flat_call_pending_ && kind != Kind::change_tool) open_flat_job();
   if (shape_ == Shape::flat && previous_ == Kind::end_of_job && kind != Kind::end_program)
     refuse(command_offset_, "a command between a flat job's @end_of_job and @end_program");
