@@ -635,7 +635,7 @@ const char* Post::scan_pairs(const char* q, const char* end, Values<Count>& valu
     }
     i += static_cast<unsigned>(std::countr_zero(solid));
     if ((w.newline >> i) & 1) {  // the end of the line: the command goes on, or the next one starts
-      if (i < 60) {  // `..>` after blanks, inside the window: the next pairs right away
+      if (i < 60 && w.base + i + 1 < end) {  // `..>` after blanks, inside the window: the next pairs right away
         const std::uint64_t next_solid = ~w.blank >> (i + 1);
         const unsigned j = i + 1 + static_cast<unsigned>(std::countr_zero(next_solid));
         if (next_solid != 0 && j > i + 1 && j + 3 <= 64 && w.base[j] == '.' && w.base[j + 1] == '.' && w.base[j + 2] == '>') {
