@@ -9,6 +9,8 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <cstdio>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -142,6 +144,57 @@ std::string job_text(std::size_t motions, bench::JobShape shape) {
   while (job.next(c)) writer.write(c);
   writer.flush();
   return text.str();
+}
+
+// The precision filter's rules where make_job's values (0.5-mm steps) do not reach them: the
+// lines' coordinates moved by a few ten-thousandths to a few thousandths (below and above the
+// 0.001 of zero_value and of "an axis that barely moved keeps its value", around zero too,
+// rounding halves), written with exponents, long digits or change flags; some feeds off the tenth.
+TEST(HandPost, FiltersNudgedCoordinatesAsTheEngineDoes) {
+  const double deltas[] = {0,       0.0004,    -0.0004,   0.0005,     -0.0005, 0.0006, -0.0006, 0.001,  -0.001,
+                           0.0015,  -0.0015,   0.0009999, -0.0009999, 0.00100001, 0.002, 0.0025, -0.0025};
+  const char* feeds[] = {"1500.05", "1499.95", "1500.04999", "1200.25", "1e3", "1200.0"};
+  std::uint32_t random = 12345;  // a fixed sequence (LCG)
+  auto next = [&random](std::uint32_t n) {
+    random = random * 1664525u + 1013904223u;
+    return (random >> 8) % n;
+  };
+  std::istringstream in(job_text(400, bench::JobShape::procedures));
+  std::string trace, line;
+  while (std::getline(in, line)) {
+    if (line.rfind("(1)@line", 0) == 0) {
+      std::istringstream words(line);
+      std::string word, changed;
+      while (words >> word) {
+        const auto colon = word.find(':');
+        const std::string name = colon == std::string::npos ? "" : word.substr(0, colon);
+        if (name == "xpos" || name == "ypos" || name == "zpos") {
+          const double v = std::stod(word.substr(colon + 1)) + deltas[next(std::size(deltas))];
+          char text[40];
+          switch (next(5)) {
+            case 0: std::snprintf(text, sizeof text, "%.6e", v); break;
+            case 1: std::snprintf(text, sizeof text, "%.17f", v); break;
+            case 2: std::snprintf(text, sizeof text, "%.7fT", v); break;
+            case 3: std::snprintf(text, sizeof text, "%.7fF", v); break;
+            default: std::snprintf(text, sizeof text, "%.4f", v); break;
+          }
+          word = name + ":" + text;
+        } else if (name == "feed" && next(8) == 0) {
+          word = std::string("feed:") + feeds[next(std::size(feeds))];
+        }
+        changed += (changed.empty() ? "" : " ") + word;
+      }
+      line = changed;
+    }
+    trace += line + '\n';
+  }
+  const TempFile job("nudged.trace"), nc("nudged.nc");
+  std::ofstream(job.path, std::ios::binary) << trace;
+  post_with_engine(job.path, nc.path);
+  const std::string engine = read_file(nc.path);
+  ASSERT_FALSE(engine.empty());
+  EXPECT_TRUE(bench::hand_post::post_text(trace) == engine) << "the hand-written post's NC differs from the engine's";
+  EXPECT_NE(engine.find(".001 "), std::string::npos);  // some nudges survive the filter
 }
 
 TEST(HandPost, RefusesWhatMakeJobDoesNotWrite) {
