@@ -11,10 +11,11 @@ endfunction()
 
 # postproc_test(NAME sources... LIBS libs...): one GoogleTest executable, registered with ctest.
 # Tests run from the tests/ folder so that data paths are relative to it.
+# PREFIX (optional) goes before each test's name in ctest, so that `ctest -R PREFIX` picks a suite.
 function(postproc_test name)
-  cmake_parse_arguments(T "" "" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(T "" "PREFIX" "SOURCES;LIBS" ${ARGN})
   add_executable(${name} ${T_SOURCES})
   postproc_target_defaults(${name})
   target_link_libraries(${name} PRIVATE ${T_LIBS} GTest::gtest_main)
-  gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/tests DISCOVERY_TIMEOUT 60)
+  gtest_discover_tests(${name} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/tests DISCOVERY_TIMEOUT 60 TEST_PREFIX "${T_PREFIX}")
 endfunction()
