@@ -179,14 +179,16 @@ std::string loadavg() {
 
 int usage() {
   std::cerr << "usage: ceiling_bench [--motions N] [--runs N] [--shape procedures|flat|both] [--post P.gpp]"
-               " [--prp P.prp] [--job FILE]...\n";
+               " [--prp P.prp] [--job FILE]... [--engine POSTPROC]...\n"
+               "  --engine: the postproc binary to measure (default: the one beside ceiling_bench); give it twice\n"
+               "  to compare two builds side by side (before and after a change), each against the hand-written post\n";
   return 2;
 }
 
 int run(int argc, char** argv) {
   std::size_t motions = 1'000'000, runs = 5;
   std::string shape = "both", post = "machines/fanuc/fanuc.gpp", prp = "machines/fanuc/fanuc.prp";
-  std::vector<std::string> jobs;
+  std::vector<std::string> jobs, engines;
   for (int i = 1; i < argc; i += 2) {
     const std::string a = argv[i];
     if (i + 1 >= argc) return usage();
@@ -197,13 +199,17 @@ int run(int argc, char** argv) {
     else if (a == "--post") post = value;
     else if (a == "--prp") prp = value;
     else if (a == "--job") jobs.emplace_back(value);
+    else if (a == "--engine") engines.emplace_back(value);
     else return usage();
   }
   if (shape != "procedures" && shape != "flat" && shape != "both") return usage();
 
   const fs::path bin = fs::read_symlink("/proc/self/exe").parent_path();
-  const std::string engine = (bin / "postproc").string(), hand = (bin / "hand_post").string();
-  for (const auto& program : {engine, hand})
+  if (engines.empty()) engines.push_back((bin / "postproc").string());
+  const std::string hand = (bin / "hand_post").string();
+  std::vector<std::string> programs = engines;
+  programs.push_back(hand);
+  for (const auto& program : programs)
     if (::access(program.c_str(), X_OK) != 0) throw std::runtime_error(program + " is missing: build it first");
   for (const auto& file : {post, prp})
     if (!fs::exists(file)) throw std::runtime_error(file + " not found: run from the repository root");
@@ -239,27 +245,36 @@ int run(int argc, char** argv) {
   cpu_set_t cpus;
   CPU_ZERO(&cpus);
   const int cpu_count = ::sched_getaffinity(0, sizeof cpus, &cpus) == 0 ? CPU_COUNT(&cpus) : -1;
-  std::cout << fmt::format("ceiling_bench: {} run(s) of each, alternating (engine, then hand-written); {} CPU(s); "
+  std::cout << fmt::format("ceiling_bench: {} run(s) of each, alternating (engine{}, then hand-written); {} CPU(s); "
                            "load average {} before\n",
-                           runs, cpu_count, loadavg());
-  std::cout << fmt::format("engine: {} run -q --post {} --prp {}\nhand-written: {}\n", engine, post, prp, hand);
+                           runs, engines.size() > 1 ? "s" : "", cpu_count, loadavg());
+  for (std::size_t k = 0; k < engines.size(); ++k)
+    std::cout << fmt::format("engine {}: {} run -q --post {} --prp {}\n", k + 1, engines[k], post, prp);
+  std::cout << fmt::format("hand-written: {}\n", hand);
 
-  const fs::path engine_nc = work / "engine.nc", hand_nc = work / "hand.nc";
+  const fs::path hand_nc = work / "hand.nc";
   bool all_same = true;
   for (const Case& c : cases) {
-    Series e, h;
+    std::vector<Series> e(engines.size());
+    Series h;
     Compared last;
-    for (std::size_t r = 0; r < runs; ++r) {
-      fs::remove(engine_nc);
+    for (std::size_t r = 0; r < runs && all_same; ++r) {
+      // engine 1, engine 2, ..., then the hand-written post, whose NC each engine's must equal
+      for (std::size_t k = 0; k < engines.size(); ++k) {
+        const fs::path nc = work / fmt::format("engine{}.nc", k + 1);
+        fs::remove(nc);
+        e[k].samples.push_back(
+            run_program({engines[k], "run", "-q", "--post", post, "--prp", prp, "-o", nc.string(), c.job.string()}));
+      }
       fs::remove(hand_nc);
-      e.samples.push_back(run_program({engine, "run", "-q", "--post", post, "--prp", prp, "-o", engine_nc.string(),
-                                       c.job.string()}));
       h.samples.push_back(run_program({hand, c.job.string(), hand_nc.string()}));
-      last = compare_files(engine_nc, hand_nc);
-      if (!last.same) {
-        std::cout << fmt::format("\n{}: THE NC PROGRAMS DIFFER (run {}): first at {}\n", c.name, r + 1, last.difference);
-        all_same = false;
-        break;
+      for (std::size_t k = 0; k < engines.size() && all_same; ++k) {
+        last = compare_files(work / fmt::format("engine{}.nc", k + 1), hand_nc);
+        if (!last.same) {
+          std::cout << fmt::format("\n{}: THE NC PROGRAMS DIFFER (engine {}, run {}): first at {}\n", c.name, k + 1, r + 1,
+                                   last.difference);
+          all_same = false;
+        }
       }
     }
     if (!last.same) continue;
@@ -273,10 +288,13 @@ int run(int argc, char** argv) {
       std::cout << fmt::format("  {:<22} {:>10.3f} s {:>8.3f} s   {:<28} {:>7.1f} MB\n", who, s.median_wall(),
                                s.min_wall(), cpu, static_cast<double>(s.peak_kib()) / 1024.0);
     };
-    row("engine (postproc run)", e);
+    for (std::size_t k = 0; k < engines.size(); ++k)
+      row(engines.size() > 1 ? fmt::format("engine {}", k + 1).c_str() : "engine (postproc run)", e[k]);
     row("hand-written post", h);
-    std::cout << fmt::format("  engine / hand-written: {:.1f}x wall (median), {:.1f}x CPU (median)\n",
-                             e.median_wall() / h.median_wall(), e.median_cpu() / h.median_cpu());
+    for (std::size_t k = 0; k < engines.size(); ++k)
+      std::cout << fmt::format("  engine{} / hand-written: {:.2f}x wall (median), {:.2f}x CPU (median)\n",
+                               engines.size() > 1 ? fmt::format(" {}", k + 1) : "", e[k].median_wall() / h.median_wall(),
+                               e[k].median_cpu() / h.median_cpu());
   }
   return all_same ? 0 : 1;
 }
