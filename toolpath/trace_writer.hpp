@@ -24,7 +24,8 @@ public:
 
 private:
   std::ostream& out_;
-  std::string buffer_;
+  std::string buffer_;    // text to write, then room for more (its size is not the text's)
+  std::size_t used_ = 0;  // bytes of text at the start of buffer_
 };
 
 }  // namespace toolpath
