@@ -2,26 +2,36 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
+static_assert(std::endian::native == std::endian::little, "eight_digits makes a little-endian word");
+
 namespace toolpath {
 namespace {
 
-constexpr char kPairs[] =
-    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-    "8081828384858687888990919293949596979899";
+// The eight decimal digits of `v` (below 10^8) as the bytes of a little-endian word, the most
+// significant first, each 0 to 9 (not yet ASCII): four lanes of two digits divided at once by
+// multiplying (Paul Khuong's method), no table and no loop.
+std::uint64_t eight_digits(std::uint32_t v) {
+  const std::uint64_t merged = (v / 10000) | (std::uint64_t{v % 10000} << 32);
+  const std::uint64_t top = ((merged * 10486) >> 20) & ((0x7Full << 32) | 0x7F);  // lane / 100
+  const std::uint64_t bottom = merged - 100 * top;
+  const std::uint64_t hundreds = (bottom << 16) + top;
+  std::uint64_t tens = (hundreds * 103) >> 10;  // lane / 10
+  tens &= (0xFull << 48) | (0xFull << 32) | (0xFull << 16) | 0xF;
+  tens += (hundreds - 10 * tens) << 8;
+  return tens;
+}
 
-// The nine digits of `v` (below 10^9), leading zeros included.
-void write_nine(char* out, std::uint32_t v) {
-  for (int i = 7; i >= 1; i -= 2) {
-    std::memcpy(out + i, kPairs + 2 * (v % 100), 2);
-    v /= 100;
-  }
-  out[0] = static_cast<char>('0' + v);
+constexpr std::uint64_t kZeros = 0x3030303030303030;  // '0' in every byte
+
+// Writes the ASCII digits of a word from eight_digits (8 bytes, some possibly past what counts).
+void put8(char* out, std::uint64_t digits) {
+  digits += kZeros;
+  std::memcpy(out, &digits, 8);
 }
 
 char* write_exact(char* out, double v) {
@@ -50,18 +60,25 @@ char* write_number_text(char* out, double v) {
     const auto n = static_cast<std::uint64_t>((scaled + kShift) - kShift);
     if (static_cast<double>(n) / 1e9 == a) {  // both exact doubles: the quotient is correctly rounded
       if (v < 0) *out++ = '-';
-      const auto whole = static_cast<std::uint32_t>(n / 1000000000u);
+      const auto whole = static_cast<std::uint32_t>(n / 1000000000u);  // below 10^6
       const auto frac = static_cast<std::uint32_t>(n % 1000000000u);
-      out = std::to_chars(out, out + 8, whole).ptr;
+      // The whole part without its leading zeros (the first bytes of the word), "0" for none.
+      const std::uint64_t w = eight_digits(whole);
+      const int leading = whole == 0 ? 7 : std::countr_zero(w) / 8;
+      put8(out, w >> (8 * leading));
+      out += 8 - leading;
       *out++ = '.';
       if (frac == 0) {
         *out++ = '0';
         return out;
       }
-      write_nine(out, frac);
-      out += 9;
-      while (out[-1] == '0') --out;
-      return out;
+      // Nine decimals without their trailing zeros (the last bytes of the word).
+      const std::uint32_t rest = frac % 100000000u;
+      out[0] = static_cast<char>('0' + frac / 100000000u);
+      const std::uint64_t f = eight_digits(rest);
+      put8(out + 1, f);
+      const int trailing = rest == 0 ? 8 : std::countl_zero(f) / 8;
+      return out + 9 - trailing;
     }
   } else if (v == 0) {
     const char* text = std::signbit(v) ? "-0.0" : "0.0";
