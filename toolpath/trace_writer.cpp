@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "toolpath/number_text.hpp"
+#include "toolpath/prefetch.hpp"
 
 namespace toolpath {
 namespace {
@@ -13,6 +14,24 @@ namespace {
 constexpr std::size_t kArrowColumn = 20;  // `==>` and `..>` start in column 21, as SolidCAM writes them
 constexpr std::size_t kLineWidth = 100;   // parameters wrap onto `..>` lines past this width
 constexpr std::size_t kNumberRoom = kMaxNumberText + 1;  // a number or an integer, and its flag
+
+// Copies a short text without a call: two overlapping fixed-size copies (names and enumeration
+// words are mostly 4 to 16 bytes).
+void copy_short(char* to, const char* from, std::size_t n) {
+  if (n >= 8 && n <= 16) {
+    std::memcpy(to, from, 8);
+    std::memcpy(to + n - 8, from + n - 8, 8);
+  } else if (n >= 4 && n < 8) {
+    std::memcpy(to, from, 4);
+    std::memcpy(to + n - 4, from + n - 4, 4);
+  } else if (n > 0 && n < 4) {
+    to[0] = from[0];
+    to[n / 2] = from[n / 2];
+    to[n - 1] = from[n - 1];
+  } else if (n > 16) {
+    std::memcpy(to, from, n);
+  }
+}
 
 // Text appended through a cursor into a string kept larger than what is written: one capacity
 // check per piece instead of one per character, no formatting library on the way. The string
@@ -32,7 +51,7 @@ public:
   void put(char c) { *p_++ = c; }  // after room()
   void text(std::string_view t) {
     room(t.size());
-    std::memcpy(p_, t.data(), t.size());
+    copy_short(p_, t.data(), t.size());
     p_ += t.size();
   }
   void blanks(std::size_t n) {
@@ -117,11 +136,16 @@ void put_command(Cursor& out, const Command& command) {
       pairs_on_line = 0;
       header_line_taken = false;
     }
-    out.room(p.name.size() + 2);
+    out.room(p.name.size() + 2 + kNumberRoom);  // numbers, the most common values, need no other check
     out.put(' ');
     out.text(p.name);
     out.put(':');
-    put_value(out, p.value);
+    if (p.value.kind == ValueKind::Numeric) {
+      out.at() = write_number_text(out.at(), p.value.numeric);
+      put_flag(out, p.value.flag);
+    } else {
+      put_value(out, p.value);
+    }
     ++pairs_on_line;
   }
   out.room(1);
@@ -170,6 +194,19 @@ void TraceWriter::write(const Command& command) {
 void TraceWriter::flush() {
   out_.write(buffer_.data(), static_cast<std::streamsize>(used_));
   used_ = 0;
+}
+
+std::size_t write_trace(CommandSource& source, std::ostream& out) {
+  PrefetchSource ahead(source);
+  TraceWriter writer(out);
+  Command command;
+  std::size_t count = 0;
+  while (ahead.next(command)) {
+    writer.write(command);
+    ++count;
+  }
+  writer.flush();
+  return count;
 }
 
 }  // namespace toolpath
