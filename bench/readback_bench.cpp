@@ -135,7 +135,8 @@ Timing run_process(const std::vector<std::string>& argv, const std::string& stdo
   return t;
 }
 
-// `postproc read --dialect NAME PROGRAM > out`, in this process.
+// `postproc read --dialect NAME PROGRAM > out`, in this process (its reader on a second thread,
+// as postproc read does).
 Timing read_in_process(const std::string& program, const std::string& dialect, const std::string& out_path) {
   const machines::Controller* controller = machines::find_controller(dialect);
   if (!controller) throw std::runtime_error("unknown dialect " + dialect + " (known: " + machines::controller_names() + ")");
@@ -146,10 +147,7 @@ Timing read_in_process(const std::string& program, const std::string& dialect, c
     std::ofstream out(out_path, std::ios::binary);
     std::ostringstream warnings;
     auto reader = controller->open(program, dialect, {}, warnings);
-    toolpath::TraceWriter writer(out);
-    toolpath::Command command;
-    while (reader->next(command)) writer.write(command);
-    writer.flush();
+    toolpath::write_trace(*reader, out);
   }
   Timing t;
   t.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

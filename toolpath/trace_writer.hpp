@@ -6,6 +6,7 @@
 #include <string>
 
 #include "toolpath/command.hpp"
+#include "toolpath/source.hpp"
 
 namespace toolpath {
 
@@ -27,5 +28,11 @@ private:
   std::string buffer_;    // text to write, then room for more (its size is not the text's)
   std::size_t used_ = 0;  // bytes of text at the start of buffer_
 };
+
+// Writes every command of `source` to `out` in the canonical form, as `postproc read` prints them,
+// and returns their number. The source is read on a worker thread (PrefetchSource) while this
+// thread writes: on two cores reading and writing overlap. What the source throws is rethrown
+// after the commands before it are written.
+std::size_t write_trace(CommandSource& source, std::ostream& out);
 
 }  // namespace toolpath
