@@ -135,8 +135,7 @@ Timing run_process(const std::vector<std::string>& argv, const std::string& stdo
   return t;
 }
 
-// `postproc read --dialect NAME PROGRAM > out`, in this process (its reader on a second thread,
-// as postproc read does).
+// `postproc read --dialect NAME PROGRAM > out`, in this process.
 Timing read_in_process(const std::string& program, const std::string& dialect, const std::string& out_path) {
   const machines::Controller* controller = machines::find_controller(dialect);
   if (!controller) throw std::runtime_error("unknown dialect " + dialect + " (known: " + machines::controller_names() + ")");

@@ -6,7 +6,6 @@
 #include <string_view>
 
 #include "toolpath/number_text.hpp"
-#include "toolpath/prefetch.hpp"
 
 namespace toolpath {
 namespace {
@@ -197,11 +196,10 @@ void TraceWriter::flush() {
 }
 
 std::size_t write_trace(CommandSource& source, std::ostream& out) {
-  PrefetchSource ahead(source);
   TraceWriter writer(out);
   Command command;
   std::size_t count = 0;
-  while (ahead.next(command)) {
+  while (source.next(command)) {
     writer.write(command);
     ++count;
   }

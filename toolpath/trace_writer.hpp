@@ -30,9 +30,9 @@ private:
 };
 
 // Writes every command of `source` to `out` in the canonical form, as `postproc read` prints them,
-// and returns their number. The source is read on a worker thread (PrefetchSource) while this
-// thread writes: on two cores reading and writing overlap. What the source throws is rethrown
-// after the commands before it are written.
+// and returns their number; what the source throws goes up after the commands before it are
+// written. One thread: reading on a second one (PrefetchSource) was measured slower on the shared
+// 2-core machine (the commands' buffers cross between cores; docs/performance.md).
 std::size_t write_trace(CommandSource& source, std::ostream& out);
 
 }  // namespace toolpath
