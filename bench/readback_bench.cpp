@@ -3,11 +3,13 @@
 // a file (rs274 its canonical calls, ours the trace `postproc read` prints); the medians and the
 // ratio. The machine is shared and noisy, so only times of one run are compared.
 //
-// usage: readback_bench [--dialect NAME] [--runs N] [--make LINES] [--postproc BIN] [--keep] PROGRAM
+// usage: readback_bench [--dialect NAME] [--runs N] [--make LINES] [--postproc BIN]... [--keep] PROGRAM
 //   --dialect   controller model to read with (default pikocnc)
 //   --runs      runs of each reader (default 5)
 //   --make      first write a spiral milling program of LINES N-numbered blocks to PROGRAM
-//   --postproc  run `BIN read --dialect NAME PROGRAM` as a process instead of reading in-process
+//   --postproc  run `BIN read --dialect NAME PROGRAM` as a process instead of reading in-process;
+//               given more than once, each binary in turn (before and after a change, in one run),
+//               and their outputs compared byte for byte
 //   --keep      keep both outputs (in /tmp) to compare or inspect; by default they are removed
 // rs274 is run when it is on PATH (`rs274 -t EMPTY.tbl PROGRAM OUT </dev/null`), otherwise skipped.
 // Release build: cmake --build build-release --target readback_bench postproc
@@ -173,10 +175,31 @@ long file_size(const std::string& path) {
   return f ? static_cast<long>(f.tellg()) : -1;
 }
 
+// One reader of the comparison and its times.
+struct Reader {
+  std::string label;     // "rs274", "in-process" or a postproc binary
+  std::string binary;    // empty: in-process
+  std::string output;    // where it writes
+  std::vector<double> wall, user;
+  long peak_kb = 0;
+};
+
+bool same_files(const std::string& a, const std::string& b) {
+  std::ifstream x(a, std::ios::binary), y(b, std::ios::binary);
+  std::vector<char> p(1 << 16), q(1 << 16);
+  for (;;) {
+    x.read(p.data(), static_cast<std::streamsize>(p.size()));
+    y.read(q.data(), static_cast<std::streamsize>(q.size()));
+    if (x.gcount() != y.gcount() || !std::equal(p.begin(), p.begin() + x.gcount(), q.begin())) return false;
+    if (x.gcount() == 0) return true;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string dialect = "pikocnc", program, postproc;
+  std::string dialect = "pikocnc", program;
+  std::vector<std::string> binaries;
   int runs = 5;
   std::size_t make = 0;
   bool keep = false;
@@ -190,13 +213,14 @@ int main(int argc, char** argv) {
       if (a == "--dialect") dialect = value();
       else if (a == "--runs") runs = std::max(1, std::stoi(value()));
       else if (a == "--make") make = std::stoul(value());
-      else if (a == "--postproc") postproc = value();
+      else if (a == "--postproc") binaries.push_back(value());
       else if (a == "--keep") keep = true;
       else if (!a.empty() && a[0] == '-') throw std::runtime_error("unknown option " + a);
       else program = a;
     }
     if (program.empty())
-      throw std::runtime_error("usage: readback_bench [--dialect NAME] [--runs N] [--make LINES] [--postproc BIN] [--keep] PROGRAM");
+      throw std::runtime_error(
+          "usage: readback_bench [--dialect NAME] [--runs N] [--make LINES] [--postproc BIN]... [--keep] PROGRAM");
     if (make > 0) {
       std::ofstream out(program, std::ios::binary);
       write_spiral_program(out, make);
@@ -206,44 +230,47 @@ int main(int argc, char** argv) {
     if (file_size(program) < 0) throw std::runtime_error("cannot read " + program);
 
     const std::string base = fmt::format("/tmp/readback_bench.{}", getpid());
-    const std::string table = base + ".tbl", rs_out = base + ".rs274.out", our_out = base + "." + dialect + ".trace";
+    const std::string table = base + ".tbl";
     std::ofstream(table).flush();  // an empty tool table: rs274 wants one
-    const std::optional<std::string> rs274 = on_path("rs274");
-    if (!rs274) fmt::print("rs274 is not on PATH: skipped (LinuxCNC's linuxcnc-uspace package has it)\n");
+    std::vector<Reader> readers;
+    if (const std::optional<std::string> rs274 = on_path("rs274"))
+      readers.push_back({"rs274", *rs274, base + ".rs274.out", {}, {}, 0});
+    else
+      fmt::print("rs274 is not on PATH: skipped (LinuxCNC's linuxcnc-uspace package has it)\n");
+    const bool with_rs274 = !readers.empty();
+    if (binaries.empty()) readers.push_back({"in-process", "", base + ".0.trace", {}, {}, 0});
+    for (std::size_t i = 0; i < binaries.size(); ++i)
+      readers.push_back({binaries[i], binaries[i], fmt::format("{}.{}.trace", base, i), {}, {}, 0});
 
-    std::vector<double> rs_wall, rs_user, our_wall, our_user;
-    long rs_peak = 0, our_peak = 0;
     for (int run = 0; run < runs; ++run) {
-      if (rs274) {
-        const Timing t = run_process({*rs274, "-t", table, program, rs_out}, "/dev/null");
-        rs_wall.push_back(t.wall);
-        rs_user.push_back(t.user);
-        rs_peak = std::max(rs_peak, t.peak_kb);
+      std::string line = fmt::format("run {}:", run + 1);
+      for (Reader& r : readers) {
+        const Timing t = r.label == "rs274" ? run_process({r.binary, "-t", table, program, r.output}, "/dev/null")
+                         : r.binary.empty() ? read_in_process(program, dialect, r.output)
+                                            : run_process({r.binary, "read", "--dialect", dialect, program}, r.output);
+        r.wall.push_back(t.wall);
+        r.user.push_back(t.user);
+        r.peak_kb = std::max(r.peak_kb, t.peak_kb);
+        line += fmt::format(" {:.2f} s", t.wall);
       }
-      const Timing t = postproc.empty() ? read_in_process(program, dialect, our_out)
-                                        : run_process({postproc, "read", "--dialect", dialect, program}, our_out);
-      our_wall.push_back(t.wall);
-      our_user.push_back(t.user);
-      our_peak = std::max(our_peak, t.peak_kb);
-      fmt::print("run {}: {}{} {:.2f} s\n", run + 1, rs274 ? fmt::format("rs274 {:.2f} s, ", rs_wall.back()) : "",
-                 dialect, our_wall.back());
+      fmt::print("{}\n", line);
     }
-    const std::string how = postproc.empty() ? "in-process" : postproc;
-    fmt::print("{:<8} median {:.3f} s wall, {:.3f} s user; peak RSS {} kB ({}); output {} bytes\n", dialect,
-               median(our_wall), median(our_user), our_peak, how, file_size(our_out));
-    fmt::print("         wall: {}\n", list(our_wall));
-    if (rs274) {
-      fmt::print("rs274    median {:.3f} s wall, {:.3f} s user; peak RSS {} kB; output {} bytes\n", median(rs_wall),
-                 median(rs_user), rs_peak, file_size(rs_out));
-      fmt::print("         wall: {}\n", list(rs_wall));
-      fmt::print("ratio rs274 / {}: {:.1f}x wall, {:.1f}x user\n", dialect, median(rs_wall) / median(our_wall),
-                 median(rs_user) / median(our_user));
+    fmt::print("{} blocks read with --dialect {}, {} runs each, alternately; medians:\n", program, dialect, runs);
+    for (const Reader& r : readers) {
+      fmt::print("  {:<12} {:.3f} s wall, {:.3f} s user; peak RSS {} kB; output {} bytes", r.label, median(r.wall),
+                 median(r.user), r.peak_kb, file_size(r.output));
+      if (with_rs274 && &r != &readers.front())
+        fmt::print("; rs274 / this: {:.1f}x wall, {:.1f}x user", median(readers.front().wall) / median(r.wall),
+                   median(readers.front().user) / median(r.user));
+      fmt::print("\n    wall: {}\n", list(r.wall));
     }
-    if (keep) {
-      fmt::print("outputs kept: {}{}\n", our_out, rs274 ? " " + rs_out : "");
-    } else {
-      std::remove(our_out.c_str());
-      std::remove(rs_out.c_str());
+    const std::size_t ours = with_rs274 ? 1 : 0;
+    for (std::size_t i = ours + 1; i < readers.size(); ++i)
+      if (!same_files(readers[ours].output, readers[i].output))
+        fmt::print("OUTPUTS DIFFER: {} and {}\n", readers[ours].label, readers[i].label);
+    for (const Reader& r : readers) {
+      if (keep) fmt::print("kept: {}\n", r.output);
+      else std::remove(r.output.c_str());
     }
     std::remove(table.c_str());
   } catch (const std::exception& e) {
