@@ -59,7 +59,8 @@ char* write_number_text(char* out, double v) {
     constexpr double kShift = 6755399441055744.0;  // 1.5 * 2^52: adding it rounds to an integer
     const auto n = static_cast<std::uint64_t>((scaled + kShift) - kShift);
     if (static_cast<double>(n) / 1e9 == a) {  // both exact doubles: the quotient is correctly rounded
-      if (v < 0) *out++ = '-';
+      *out = '-';  // kept for a negative value: no branch on a sign that changes value to value
+      out += v < 0;
       const auto whole = static_cast<std::uint32_t>(n / 1000000000u);  // below 10^6
       const auto frac = static_cast<std::uint32_t>(n % 1000000000u);
       // The whole part without its leading zeros (the first bytes of the word), "0" for none.
@@ -82,9 +83,9 @@ char* write_number_text(char* out, double v) {
     }
   } else if (v == 0) {
     const char* text = std::signbit(v) ? "-0.0" : "0.0";
-    const std::size_t n = std::signbit(v) ? 4 : 3;
-    std::memcpy(out, text, n);
-    return out + n;
+    const std::size_t length = std::signbit(v) ? 4 : 3;
+    std::memcpy(out, text, length);
+    return out + length;
   }
   return write_exact(out, v);
 }
