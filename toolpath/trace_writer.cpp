@@ -1,7 +1,9 @@
 #include "toolpath/trace_writer.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
+#include <cstdint>
 #include <cstring>
 #include <string_view>
 
@@ -102,7 +104,30 @@ void put_value(Cursor& out, const Value& value) {
   }
 }
 
-void put_command(Cursor& out, const Command& command) {
+// Writes a numeric value, through the cache when there is one.
+void put_number(Cursor& out, double v, NumberCache* cache) {
+  if (!cache) {
+    out.at() = write_number_text(out.at(), v);
+    return;
+  }
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(v);
+  NumberCache::Entry& e = cache->entries[(bits * 0x9E3779B97F4A7C15u) >> 58];
+  if (e.length > 0 && e.bits == bits) {
+    std::memcpy(out.at(), e.text, sizeof e.text);  // the room is there: kNumberRoom
+    out.at() += e.length;
+    return;
+  }
+  char* const start = out.at();
+  out.at() = write_number_text(start, v);
+  const auto length = static_cast<std::size_t>(out.at() - start);
+  if (length <= sizeof e.text) {
+    e.bits = bits;
+    e.length = static_cast<std::uint32_t>(length);
+    std::memcpy(e.text, start, sizeof e.text);  // the bytes past the text are never copied out
+  }
+}
+
+void put_command(Cursor& out, const Command& command, NumberCache* cache) {
   std::size_t line_start = out.used();
   out.room(kNumberRoom + 1);
   out.put('(');
@@ -140,7 +165,7 @@ void put_command(Cursor& out, const Command& command) {
     out.text(p.name);
     out.put(':');
     if (p.value.kind == ValueKind::Numeric) {
-      out.at() = write_number_text(out.at(), p.value.numeric);
+      put_number(out, p.value.numeric, cache);
       put_flag(out, p.value.flag);
     } else {
       put_value(out, p.value);
@@ -179,13 +204,13 @@ void append_value(std::string& out, const Value& value) {
 
 void append_command(std::string& out, const Command& command) {
   Cursor c(out, out.size());
-  put_command(c, command);
+  put_command(c, command, nullptr);
   out.resize(c.used());
 }
 
 void TraceWriter::write(const Command& command) {
   Cursor c(buffer_, used_);
-  put_command(c, command);
+  put_command(c, command, &numbers_);
   used_ = c.used();
   if (used_ > (1u << 17)) flush();
 }
