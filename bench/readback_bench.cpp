@@ -3,14 +3,16 @@
 // a file (rs274 its canonical calls, ours the trace `postproc read` prints); the medians and the
 // ratio. The machine is shared and noisy, so only times of one run are compared.
 //
-// usage: readback_bench [--dialect NAME] [--runs N] [--make LINES] [--postproc BIN]... [--keep] PROGRAM
+// usage: readback_bench [--dialect NAME] [--runs N] [--make LINES] [--postproc BIN]... [--keep] [--out-dir DIR] PROGRAM
 //   --dialect   controller model to read with (default pikocnc)
 //   --runs      runs of each reader (default 5)
 //   --make      first write a spiral milling program of LINES N-numbered blocks to PROGRAM
 //   --postproc  run `BIN read --dialect NAME PROGRAM` as a process instead of reading in-process;
 //               given more than once, each binary in turn (before and after a change, in one run),
 //               and their outputs compared byte for byte
-//   --keep      keep both outputs (in /tmp) to compare or inspect; by default they are removed
+//   --keep      keep the outputs to compare or inspect; by default they are removed
+//   --out-dir   where the outputs go (default /tmp); /dev/shm keeps the disk out of the times (a
+//               run that overwrites its last 100 MB output may wait for that to reach the disk)
 // rs274 is run when it is on PATH (`rs274 -t EMPTY.tbl PROGRAM OUT </dev/null`), otherwise skipped.
 // Release build: cmake --build build-release --target readback_bench postproc
 #include <fmt/format.h>
@@ -198,7 +200,7 @@ bool same_files(const std::string& a, const std::string& b) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string dialect = "pikocnc", program;
+  std::string dialect = "pikocnc", program, out_dir = "/tmp";
   std::vector<std::string> binaries;
   int runs = 5;
   std::size_t make = 0;
@@ -215,12 +217,13 @@ int main(int argc, char** argv) {
       else if (a == "--make") make = std::stoul(value());
       else if (a == "--postproc") binaries.push_back(value());
       else if (a == "--keep") keep = true;
+      else if (a == "--out-dir") out_dir = value();
       else if (!a.empty() && a[0] == '-') throw std::runtime_error("unknown option " + a);
       else program = a;
     }
     if (program.empty())
       throw std::runtime_error(
-          "usage: readback_bench [--dialect NAME] [--runs N] [--make LINES] [--postproc BIN]... [--keep] PROGRAM");
+          "usage: readback_bench [--dialect NAME] [--runs N] [--make LINES] [--postproc BIN]... [--keep] [--out-dir DIR] PROGRAM");
     if (make > 0) {
       std::ofstream out(program, std::ios::binary);
       write_spiral_program(out, make);
@@ -229,7 +232,7 @@ int main(int argc, char** argv) {
     }
     if (file_size(program) < 0) throw std::runtime_error("cannot read " + program);
 
-    const std::string base = fmt::format("/tmp/readback_bench.{}", getpid());
+    const std::string base = fmt::format("{}/readback_bench.{}", out_dir, getpid());
     const std::string table = base + ".tbl";
     std::ofstream(table).flush();  // an empty tool table: rs274 wants one
     std::vector<Reader> readers;
