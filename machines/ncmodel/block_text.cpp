@@ -10,9 +10,6 @@
 
 namespace ncmodel {
 
-bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 void Cursor::skip() {
   while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
 }

@@ -69,9 +69,7 @@ int run_read(const Arguments& args, std::ostream& out, std::ostream& err) {
     for (const auto& [name, n] : counts) out << fmt::format("  {:<24}{:>8}\n", name, n);
     return kOk;
   }
-  toolpath::TraceWriter writer(out);
-  while (reader->next(command)) writer.write(command);
-  writer.flush();
+  toolpath::write_trace(*reader, out);
   return kOk;
 }
 

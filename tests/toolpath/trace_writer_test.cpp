@@ -1,7 +1,10 @@
 // The canonical writer: exact layout for a few commands, and read -> write -> read round trips.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -99,6 +102,36 @@ TEST(TraceWriter, LongParameterListsWrapOntoContinuationLines) {
   std::istringstream lines(text);
   std::string line;
   while (std::getline(lines, line)) EXPECT_LE(line.size(), 130u) << line;
+}
+
+}  // namespace
+
+namespace {
+
+// TraceWriter keeps the text of recent numbers (NumberCache); append_command writes every number
+// afresh. Values drawn again and again from a pool (hash collisions included, -0, flags, values
+// too long for the cache) must come out the same both ways.
+TEST(TraceWriter, NumberCacheWritesWhatTheDigitsWould) {
+  std::mt19937_64 rng(2025);
+  std::vector<double> pool = {0.0, -0.0, 800.0, -1.0, 1e-5, 1e20, 0.1 + 0.2, -123456.123456789, 1.5e-300};
+  for (int i = 0; i < 300; ++i) pool.push_back(static_cast<double>(static_cast<std::int64_t>(rng() % 2000000000) - 1000000000) / 1e4);
+  for (int i = 0; i < 100; ++i) pool.push_back(std::ldexp(static_cast<double>(rng() >> 11), -static_cast<int>(rng() % 80)));
+  std::string expected;
+  std::ostringstream written;
+  {
+    toolpath::TraceWriter writer(written);
+    for (int i = 0; i < 20000; ++i) {
+      Command c;
+      c.name = "@line";
+      for (const char* name : {"xpos", "ypos", "zpos", "feed"}) {
+        const ChangeFlag flag = rng() % 10 == 0 ? ChangeFlag::Changed : ChangeFlag::None;
+        c.set(name, Value::make_numeric(pool[rng() % pool.size()], flag));
+      }
+      toolpath::append_command(expected, c);
+      writer.write(c);
+    }
+  }
+  EXPECT_EQ(written.str(), expected);
 }
 
 }  // namespace

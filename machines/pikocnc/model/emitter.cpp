@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "toolpath/error.hpp"
+#include "toolpath/short_text.hpp"
 
 namespace pikocnc {
 
@@ -35,7 +36,7 @@ void Emitter::add(std::string_view name) {
   Command& c = queue_[tail_];
   lines_[tail_] = line_;
   ++tail_;
-  if (c.name != name) c.name.assign(name);
+  if (!toolpath::same_short_text(c.name, name)) take_shape(c, name);
   c.depth = 1;
   c.trace.clear();
   current_ = &c;
@@ -100,11 +101,29 @@ void Emitter::mute(bool on) {
   muted_ = on;
 }
 
+void Emitter::take_shape(toolpath::Command& c, std::string_view name) {
+  // The queue's commands come back from the consumer in turn, so a @line is mostly refilled from
+  // the @line before last, but an @arc from a @line: its parameters would be renamed (and their
+  // keys looked up) arc after arc. A few commands of other names wait here with their parameters.
+  for (toolpath::Command& spare : spares_)
+    if (toolpath::same_short_text(spare.name, name)) {
+      swap(c, spare);
+      return;
+    }
+  if (spares_.size() < kSpares) {
+    swap(c, spares_.emplace_back());  // c starts empty; its old shape waits for its name
+  } else {
+    swap(c, spares_[next_spare_]);
+    next_spare_ = (next_spare_ + 1) % kSpares;
+  }
+  c.name.assign(name);
+}
+
 toolpath::Value& Emitter::slot(std::string_view name, toolpath::ValueKind kind) {
   auto& params = current_->parameters;
   if (fill_ == params.size()) params.emplace_back();
   toolpath::Parameter& p = params[fill_++];
-  if (p.name != name) p.rename(name);  // a recycled command usually has the same names
+  if (!toolpath::same_short_text(p.name, name)) p.rename(name);  // a recycled command usually has the same names
   p.value.kind = kind;
   p.value.flag = toolpath::ChangeFlag::None;
   return p.value;

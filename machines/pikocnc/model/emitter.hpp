@@ -75,6 +75,8 @@ public:
 
 private:
   void finish_command();
+  // Gives `c` the parameters of a command named `name` from the spares (or none), keeping its own.
+  void take_shape(toolpath::Command& c, std::string_view name);
   toolpath::Value& slot(std::string_view name, toolpath::ValueKind kind);
   void positions(const Eigen::Vector3d& p, double a, double b);
   void straight(const Move& m, const Eigen::Vector3d& to, bool from_arc);
@@ -108,6 +110,9 @@ private:
   bool saved_attached_ = false;
   bool muted_ = false;
   toolpath::Command scratch_;  // where muted commands go
+  static constexpr std::size_t kSpares = 8;
+  std::vector<toolpath::Command> spares_;  // commands of other names, with their buffers
+  std::size_t next_spare_ = 0;
   std::size_t built_ = 0;
   std::size_t budget_ = static_cast<std::size_t>(-1);
   std::string file_;

@@ -4,6 +4,8 @@
 
 #include <Eigen/Dense>
 
+#include <cmath>
+
 #include "toolpath/geometry.hpp"
 
 namespace pikocnc {
@@ -21,7 +23,20 @@ using toolpath::geometry::plane_name;
 using toolpath::geometry::in_plane;
 
 // Rounds to 1e-9 (a nanometre) and turns -0 into 0, so printed values are short and stable.
-double clean(double v);
+// Inline: every number of every command goes through it.
+inline double clean(double v) {
+  const double scaled = v * 1e9;
+  double rounded;
+  if (std::abs(scaled) < 1e15) {
+    constexpr double kShift = 6755399441055744.0;  // 1.5 * 2^52: adding it rounds to an integer
+    rounded = (scaled + kShift) - kShift;
+  } else {
+    rounded = std::round(scaled);
+  }
+  if (rounded == scaled) return v == 0.0 ? 0.0 : v;  // already short: keep it as it is
+  const double r = rounded / 1e9;
+  return r == 0.0 ? 0.0 : r;
+}
 
 // A word's value as an integer (a code, a count, a table number): truncated, and saturated so that
 // a huge value stays huge and is rejected by the caller's range check (a plain cast is undefined).

@@ -73,48 +73,105 @@ struct Number {
   }
 };
 
-// number = [sign] (digits [sep [digits]] | sep digits), blanks ignored in between.
+// number = [sign] (digits [sep [digits]] | sep digits), blanks ignored in between. The state is
+// kept in locals (registers) and each run of digits is read by its own loop: every byte of the
+// program goes through here.
 std::size_t read_number(std::string_view s, std::size_t i, Number& n) {
-  n.ok = n.negative = n.has_sign = n.has_sep = false;
-  n.int_part = n.mantissa = n.frac = 0;
-  n.digits = n.frac_digits = 0;
-  auto skip = [&] {
-    while (i < s.size() && is_blank(s[i])) ++i;
-  };
-  skip();
-  if (i < s.size() && (s[i] == '+' || s[i] == '-')) {
-    n.negative = s[i] == '-';
-    n.has_sign = true;
+  const char* p = s.data();
+  const std::size_t size = s.size();
+  bool negative = false, has_sign = false, has_sep = false;
+  std::uint64_t mantissa = 0, frac = 0, int_part = 0;
+  int digits = 0, frac_digits = 0;
+  while (i < size && is_blank(p[i])) ++i;
+  if (i < size && (p[i] == '+' || p[i] == '-')) {
+    negative = p[i] == '-';
+    has_sign = true;
     ++i;
-    skip();
+    while (i < size && is_blank(p[i])) ++i;
   }
-  int any = 0;
   const std::size_t begin = i;
   for (;;) {
-    skip();
-    if (i >= s.size()) break;
-    const char c = s[i];
+    while (i < size && is_blank(p[i])) ++i;
+    if (i >= size) break;
+    char c = p[i];
     if (is_digit(c)) {
-      ++any;
-      if (n.digits < 19) n.mantissa = n.mantissa * 10 + static_cast<unsigned>(c - '0');
-      ++n.digits;
-      if (n.has_sep) {
-        if (n.frac_digits < 18) n.frac = n.frac * 10 + static_cast<unsigned>(c - '0');
-        ++n.frac_digits;
-      } else if (n.digits <= 19) {
-        n.int_part = n.mantissa;
+      if (!has_sep) {
+        do {
+          if (digits < 19) mantissa = mantissa * 10 + static_cast<unsigned>(c - '0');
+          ++digits;
+        } while (++i < size && is_digit(c = p[i]));
+        int_part = mantissa;  // the first 19 digits, as the mantissa stops there
+      } else {
+        do {
+          const auto d = static_cast<unsigned>(c - '0');
+          if (digits < 19) mantissa = mantissa * 10 + d;
+          ++digits;
+          if (frac_digits < 18) frac = frac * 10 + d;
+          ++frac_digits;
+        } while (++i < size && is_digit(c = p[i]));
       }
-      ++i;
-    } else if ((c == '.' || c == ',') && !n.has_sep) {
-      n.has_sep = true;
-      ++i;
-    } else {
-      break;
+      continue;
     }
+    if ((c == '.' || c == ',') && !has_sep) {
+      has_sep = true;
+      ++i;
+      continue;
+    }
+    break;
   }
-  n.ok = any > 0;
+  n.ok = digits > 0;
+  n.negative = negative;
+  n.has_sign = has_sign;
+  n.has_sep = has_sep;
+  n.int_part = int_part;
+  n.mantissa = mantissa;
+  n.frac = frac;
+  n.digits = digits;
+  n.frac_digits = frac_digits;
   n.text = s.substr(begin, i - begin);
   return i;
+}
+
+// The common word value, read by a loop of its own: `-`, up to fifteen digits with a `.` among
+// them, then blanks up to the next letter or the end of the line. Fills `n` as read_number would
+// and returns where that would stop; returns 0 (nothing read) for anything else (a `+`, a comma,
+// blanks inside, more digits, another character after it), which read_number then reads.
+std::size_t read_simple_number(std::string_view s, std::size_t i, Number& n) {
+  const char* p = s.data();
+  const std::size_t size = s.size();
+  const bool negative = i < size && p[i] == '-';
+  const std::size_t begin = i + negative;
+  std::size_t j = begin;
+  std::uint64_t mantissa = 0, int_part = 0;
+  int digits = 0, frac_digits = 0;
+  while (j < size && digits < 15 && is_digit(p[j])) {
+    mantissa = mantissa * 10 + static_cast<unsigned>(p[j++] - '0');
+    ++digits;
+  }
+  int_part = mantissa;
+  const bool has_sep = j < size && p[j] == '.';
+  if (has_sep) {
+    ++j;
+    while (j < size && digits < 15 && is_digit(p[j])) {
+      mantissa = mantissa * 10 + static_cast<unsigned>(p[j++] - '0');
+      ++digits;
+      ++frac_digits;
+    }
+  }
+  if (digits == 0) return 0;
+  std::size_t end = j;
+  while (end < size && is_blank(p[end])) ++end;
+  if (end < size && class_of(p[end]) != kLetter) return 0;
+  n.ok = true;
+  n.negative = n.has_sign = negative;
+  n.has_sep = has_sep;
+  n.int_part = int_part;
+  n.mantissa = mantissa;
+  n.digits = digits;
+  n.frac_digits = frac_digits;
+  n.frac = mantissa - int_part * static_cast<std::uint64_t>(kPow10[frac_digits]);
+  n.text = s.substr(begin, end - begin);
+  return end;
 }
 
 }  // namespace
@@ -168,7 +225,8 @@ void lex_line(std::string_view s, std::size_t line_number, Block& out, Diagnosti
     }
     const char letter = static_cast<char>(c & ~0x20);
     const std::size_t column = i + 1;
-    i = read_number(s, i + 1, n);
+    if (const std::size_t end = read_simple_number(s, i + 1, n)) i = end;
+    else i = read_number(s, i + 1, n);
     if (!n.ok) {
       diag.add(line_number, column, fmt::format("letter `{}` without a number skipped", letter));
       continue;

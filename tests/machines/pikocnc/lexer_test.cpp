@@ -2,7 +2,11 @@
 #include <gtest/gtest.h>
 #include <fmt/format.h>
 
+#include <bit>
+#include <cstdint>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "machines/pikocnc/model/codes.hpp"
 #include "machines/pikocnc/model/lexer.hpp"
@@ -68,6 +72,51 @@ TEST(PikoLexer, Table) {
       {"", ""},
   };
   for (const auto& c : cases) EXPECT_EQ(render(c.line), c.expected) << c.line;
+}
+
+// A word right after its letter (`X-12.5`, up to fifteen digits) is read by a fast path; a blank
+// after the letter (`X -12.5`) sends it through the general reader. Both must read the same
+// values and codes, warn the same, whatever the digits: random words of every length and form.
+TEST(PikoLexer, FastAndGeneralNumberReadersAgree) {
+  std::mt19937_64 rng(25);
+  auto digits = [&](std::size_t n) {
+    std::string d;
+    for (std::size_t i = 0; i < n; ++i) d += static_cast<char>('0' + rng() % 10);
+    return d;
+  };
+  auto word = [&](char letter) {
+    std::string w(1, letter);
+    if (rng() % 3 == 0) w += '-';
+    w += digits(rng() % 10);
+    if (rng() % 2) w += '.' + digits(rng() % 11);
+    if (rng() % 8 == 0) w += digits(rng() % 9);  // past fifteen digits at times
+    return w;
+  };
+  for (int i = 0; i < 20000; ++i) {
+    std::vector<std::string> words;
+    for (const char l : {'N', 'G', 'X', 'Y', 'I', 'J', 'M'})
+      if (rng() % 2) words.push_back(word(l));
+    std::string fast, general;
+    for (const std::string& w : words) {
+      fast += w + (rng() % 2 ? " " : "");
+      general += w.substr(0, 1) + " " + w.substr(1) + " ";
+    }
+    pikocnc::Block a, b;
+    pikocnc::Diagnostics da, db;
+    pikocnc::lex_line(fast, 1, a, da);
+    pikocnc::lex_line(general, 1, b, db);
+    ASSERT_EQ(a.present, b.present) << fast;
+    for (int k = 0; k < 26; ++k)
+      if ((a.present >> k) & 1) ASSERT_EQ(std::bit_cast<std::uint64_t>(a.value[k]), std::bit_cast<std::uint64_t>(b.value[k])) << fast;
+    ASSERT_EQ(a.code_count, b.code_count) << fast;
+    for (std::size_t k = 0; k < a.code_count; ++k) {
+      ASSERT_EQ(a.codes[k].number, b.codes[k].number) << fast;
+      ASSERT_EQ(a.codes[k].dot, b.codes[k].dot) << fast;
+      ASSERT_EQ(a.codes[k].dot_digits, b.codes[k].dot_digits) << fast;
+    }
+    ASSERT_EQ(da.kept().size(), db.kept().size()) << fast;
+    for (std::size_t k = 0; k < da.kept().size(); ++k) ASSERT_EQ(da.kept()[k].message, db.kept()[k].message) << fast;
+  }
 }
 
 TEST(PikoLexer, PercentLine) {
