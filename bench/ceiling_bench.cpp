@@ -160,16 +160,6 @@ struct Case {
   fs::path job;
 };
 
-void write_job(const fs::path& path, std::size_t motions, bench::JobShape shape) {
-  std::ofstream out(path, std::ios::binary);
-  bench::SyntheticJob job(motions, shape);
-  toolpath::TraceWriter writer(out);
-  toolpath::Command c;
-  while (job.next(c)) writer.write(c);
-  writer.flush();
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-}
-
 std::string loadavg() {
   std::ifstream in("/proc/loadavg");
   std::string one, five;
@@ -232,7 +222,7 @@ int run(int argc, char** argv) {
       if (shape != "both" && shape != name) continue;
       const fs::path path = work / (std::string(name) + ".trace");
       std::cerr << "making the " << name << " job (" << motions << " motions)...\n";
-      write_job(path, motions, s);
+      bench::write_job(path.string(), motions, s);
       cases.push_back({fmt::format("{} (make_job{} {})", name, std::string(name) == "procedures" ? " --procedures" : "",
                                    motions),
                        path});

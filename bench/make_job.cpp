@@ -3,12 +3,10 @@
 // flat (as SolidCAM sends it for gen_procs = N) unless --procedures asks for the shape it sends for
 // gen_procs = Y (the job in procedure 1, called from the main program).
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <string_view>
 
 #include "bench/synthetic_job.hpp"
-#include "toolpath/trace_writer.hpp"
 
 int main(int argc, char** argv) {
   const bool procedures = argc == 4 && std::string_view(argv[1]) == "--procedures";
@@ -24,15 +22,11 @@ int main(int argc, char** argv) {
     std::cerr << "make_job: MOTIONS must be a number\n";
     return 2;
   }
-  std::ofstream out(path, std::ios::binary);
-  if (!out) {
-    std::cerr << "make_job: cannot write " << path << '\n';
+  try {
+    bench::write_job(path, motions, procedures ? bench::JobShape::procedures : bench::JobShape::flat);
+  } catch (const std::exception& e) {
+    std::cerr << "make_job: " << e.what() << '\n';
     return 1;
   }
-  bench::SyntheticJob job(motions, procedures ? bench::JobShape::procedures : bench::JobShape::flat);
-  toolpath::TraceWriter writer(out);
-  toolpath::Command c;
-  while (job.next(c)) writer.write(c);
-  writer.flush();
-  return out ? 0 : 1;
+  return 0;
 }

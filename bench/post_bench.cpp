@@ -113,12 +113,7 @@ int run(int argc, char** argv) {
     const bench::JobShape s = shape_for(shape, prp);
     made = s == bench::JobShape::procedures ? "procedures" : "flat";
     job = (work / "job.trace").string();
-    std::ofstream out(job, std::ios::binary);
-    bench::SyntheticJob source(motions, s);
-    toolpath::TraceWriter writer(out);
-    toolpath::Command c;
-    while (source.next(c)) writer.write(c);
-    writer.flush();
+    bench::write_job(job, motions, s);
   }
   // The job file was just written: let the disk take it now, or its write-back would slow the
   // timed runs (a job a user posts has long been on disk).

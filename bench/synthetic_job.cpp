@@ -1,7 +1,11 @@
 #include "bench/synthetic_job.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <span>
+#include <stdexcept>
+
+#include "toolpath/trace_writer.hpp"
 
 namespace bench {
 namespace {
@@ -136,6 +140,21 @@ bool SyntheticJob::next(toolpath::Command& out) {
   else frame(out, tail[step_ - head.size() - motions_], shape_);
   ++step_;
   return true;
+}
+
+void write_job(std::ostream& out, std::size_t motions, JobShape shape) {
+  SyntheticJob job(motions, shape);
+  toolpath::TraceWriter writer(out);
+  toolpath::Command c;
+  while (job.next(c)) writer.write(c);
+  writer.flush();
+}
+
+void write_job(const std::string& path, std::size_t motions, JobShape shape) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw std::runtime_error("cannot write " + path);
+  write_job(out, motions, shape);
+  if (!out) throw std::runtime_error("cannot write " + path);
 }
 
 }  // namespace bench

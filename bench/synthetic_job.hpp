@@ -10,6 +10,8 @@
 #pragma once
 
 #include <cstddef>
+#include <iosfwd>
+#include <string>
 
 #include "toolpath/source.hpp"
 
@@ -28,5 +30,10 @@ private:
   std::size_t step_ = 0;   // position in the whole job (header, motions, trailer)
   std::size_t index_ = 0;  // command index
 };
+
+// Streams the job of `motions` motions as trace text, as make_job writes it: to `out`, or to a file
+// at `path` (std::runtime_error when it cannot be written).
+void write_job(std::ostream& out, std::size_t motions, JobShape shape);
+void write_job(const std::string& path, std::size_t motions, JobShape shape);
 
 }  // namespace bench

@@ -19,7 +19,6 @@
 #include "bench/hand_post.hpp"
 #include "bench/synthetic_job.hpp"
 #include "tests/support/cli_run.hpp"
-#include "toolpath/trace_writer.hpp"
 
 namespace {
 
@@ -36,16 +35,6 @@ struct TempFile {
   }
 };
 
-// The synthetic job streamed to a trace file, as make_job writes it.
-void write_job(const fs::path& path, std::size_t motions, bench::JobShape shape) {
-  std::ofstream out(path, std::ios::binary);
-  bench::SyntheticJob job(motions, shape);
-  toolpath::TraceWriter writer(out);
-  toolpath::Command c;
-  while (job.next(c)) writer.write(c);
-  writer.flush();
-  ASSERT_TRUE(out.good());
-}
 
 // `postproc run -q --post machines/fanuc/fanuc.gpp --prp machines/fanuc/fanuc.prp -o NC JOB`.
 void post_with_engine(const fs::path& job, const fs::path& nc) {
@@ -93,7 +82,7 @@ constexpr std::uint64_t kMillionLineBreaks = 1000020;
 
 void expect_todays_million_program(bench::JobShape shape) {
   const TempFile job("million.trace"), nc("million.nc");
-  write_job(job.path, 1'000'000, shape);
+  bench::write_job(job.path.string(), 1'000'000, shape);
   post_with_engine(job.path, nc.path);
   const Digest d = digest_of(nc.path);
   EXPECT_EQ(d.bytes, kMillionBytes);
@@ -109,7 +98,7 @@ TEST(MillionCommandJob, FlatShapePostsTodaysProgram) { expect_todays_million_pro
 // and from text.
 void expect_hand_post_agrees(std::size_t motions, bench::JobShape shape) {
   const TempFile job("agree.trace"), engine_nc("agree-engine.nc"), hand_nc("agree-hand.nc");
-  write_job(job.path, motions, shape);
+  bench::write_job(job.path.string(), motions, shape);
   post_with_engine(job.path, engine_nc.path);
   const std::string engine = read_file(engine_nc.path);
   ASSERT_FALSE(engine.empty());
@@ -138,11 +127,7 @@ TEST(HandPost, WritesTheEnginesProgramForALongerJobOfEitherShape) {
 
 std::string job_text(std::size_t motions, bench::JobShape shape) {
   std::ostringstream text;
-  bench::SyntheticJob job(motions, shape);
-  toolpath::TraceWriter writer(text);
-  toolpath::Command c;
-  while (job.next(c)) writer.write(c);
-  writer.flush();
+  bench::write_job(text, motions, shape);
   return text.str();
 }
 

@@ -13,7 +13,6 @@
 
 #include "bench/synthetic_job.hpp"
 #include "tests/support/cli_run.hpp"
-#include "toolpath/trace_writer.hpp"
 
 namespace {
 
@@ -22,11 +21,7 @@ namespace fs = std::filesystem;
 // The job written as a trace and read back (what the benchmark does with its file).
 std::string trace_of(bench::JobShape shape, std::size_t motions) {
   std::ostringstream text;
-  bench::SyntheticJob job(motions, shape);
-  toolpath::TraceWriter writer(text);
-  toolpath::Command c;
-  while (job.next(c)) writer.write(c);
-  writer.flush();
+  bench::write_job(text, motions, shape);
   return text.str();
 }
 
