@@ -36,7 +36,7 @@ void Emitter::add(std::string_view name) {
   Command& c = queue_[tail_];
   lines_[tail_] = line_;
   ++tail_;
-  if (!toolpath::same_short_text(c.name, name)) take_shape(c, name);
+  shelf_.rename(c, name);  // an @arc refilled from a @line takes the parameters an @arc last had
   c.depth = 1;
   c.trace.clear();
   current_ = &c;
@@ -99,24 +99,6 @@ void Emitter::end_fill() {
 void Emitter::mute(bool on) {
   finish_command();
   muted_ = on;
-}
-
-void Emitter::take_shape(toolpath::Command& c, std::string_view name) {
-  // The queue's commands come back from the consumer in turn, so a @line is mostly refilled from
-  // the @line before last, but an @arc from a @line: its parameters would be renamed (and their
-  // keys looked up) arc after arc. A few commands of other names wait here with their parameters.
-  for (toolpath::Command& spare : spares_)
-    if (toolpath::same_short_text(spare.name, name)) {
-      swap(c, spare);
-      return;
-    }
-  if (spares_.size() < kSpares) {
-    swap(c, spares_.emplace_back());  // c starts empty; its old shape waits for its name
-  } else {
-    swap(c, spares_[next_spare_]);
-    next_spare_ = (next_spare_ + 1) % kSpares;
-  }
-  c.name.assign(name);
 }
 
 toolpath::Value& Emitter::slot(std::string_view name, toolpath::ValueKind kind) {

@@ -9,6 +9,7 @@
 
 #include "machines/pikocnc/model/motion.hpp"
 #include "toolpath/command.hpp"
+#include "toolpath/parameter_shelf.hpp"
 
 namespace pikocnc {
 
@@ -75,8 +76,6 @@ public:
 
 private:
   void finish_command();
-  // Gives `c` the parameters of a command named `name` from the spares (or none), keeping its own.
-  void take_shape(toolpath::Command& c, std::string_view name);
   toolpath::Value& slot(std::string_view name, toolpath::ValueKind kind);
   void positions(const Eigen::Vector3d& p, double a, double b);
   void straight(const Move& m, const Eigen::Vector3d& to, bool from_arc);
@@ -110,9 +109,10 @@ private:
   bool saved_attached_ = false;
   bool muted_ = false;
   toolpath::Command scratch_;  // where muted commands go
-  static constexpr std::size_t kSpares = 8;
-  std::vector<toolpath::Command> spares_;  // commands of other names, with their buffers
-  std::size_t next_spare_ = 0;
+  // The queue's commands come back from the consumer in turn, so an @arc is mostly refilled
+  // from a @line: the shelf keeps the parameter vectors of other command names, so that their
+  // names need not be renamed (and looked up) arc after arc.
+  toolpath::ParameterShelf shelf_;
   std::size_t built_ = 0;
   std::size_t budget_ = static_cast<std::size_t>(-1);
   std::string file_;
