@@ -91,9 +91,8 @@ char* write_number_text(char* out, double v) {
 }
 
 std::string number_text_exact(double v) {
-  std::string out = fmt::format("{}", v);
-  if (out.find_first_of(".eE") == std::string::npos) out += ".0";
-  return out;
+  char text[kMaxNumberText];
+  return std::string(text, write_exact(text, v));
 }
 
 }  // namespace toolpath

@@ -19,7 +19,7 @@ inline constexpr std::size_t kMaxNumberText = 32;
 // number_text_exact. Both give the same bytes (tests/toolpath/number_text_test.cpp).
 char* write_number_text(char* out, double v);
 
-// The reference: fmt's shortest "{}" and the ".0" rule.
+// The reference: fmt's shortest "{}" and the ".0" rule (write_number_text's path for the rest).
 std::string number_text_exact(double v);
 
 }  // namespace toolpath

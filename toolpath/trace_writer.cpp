@@ -79,31 +79,6 @@ void put_flag(Cursor& out, ChangeFlag flag) {  // after room()
   if (flag == ChangeFlag::Unchanged) out.put('F');
 }
 
-void put_value(Cursor& out, const Value& value) {
-  switch (value.kind) {
-    case ValueKind::Integer:
-      out.room(kNumberRoom);
-      out.at() = std::to_chars(out.at(), out.at() + kNumberRoom, value.integer).ptr;
-      put_flag(out, value.flag);
-      break;
-    case ValueKind::Numeric:
-      out.room(kNumberRoom);
-      out.at() = write_number_text(out.at(), value.numeric);
-      put_flag(out, value.flag);
-      break;
-    case ValueKind::Logical: out.text(value.logical ? "true" : "false"); break;
-    case ValueKind::Enum: out.text(value.text); break;
-    case ValueKind::String: {
-      const char q = value.text.find('\'') == std::string::npos ? '\'' : '"';
-      out.room(value.text.size() + 2);
-      out.put(q);
-      out.text(value.text);
-      out.put(q);
-      break;
-    }
-  }
-}
-
 // Writes a numeric value, through the cache when there is one.
 void put_number(Cursor& out, double v, NumberCache* cache) {
   if (!cache) {
@@ -124,6 +99,31 @@ void put_number(Cursor& out, double v, NumberCache* cache) {
     e.bits = bits;
     e.length = static_cast<std::uint32_t>(length);
     std::memcpy(e.text, start, sizeof e.text);  // the bytes past the text are never copied out
+  }
+}
+
+void put_value(Cursor& out, const Value& value, NumberCache* cache) {
+  switch (value.kind) {
+    case ValueKind::Integer:
+      out.room(kNumberRoom);
+      out.at() = std::to_chars(out.at(), out.at() + kNumberRoom, value.integer).ptr;
+      put_flag(out, value.flag);
+      break;
+    case ValueKind::Numeric:
+      out.room(kNumberRoom);
+      put_number(out, value.numeric, cache);
+      put_flag(out, value.flag);
+      break;
+    case ValueKind::Logical: out.text(value.logical ? "true" : "false"); break;
+    case ValueKind::Enum: out.text(value.text); break;
+    case ValueKind::String: {
+      const char q = value.text.find('\'') == std::string::npos ? '\'' : '"';
+      out.room(value.text.size() + 2);
+      out.put(q);
+      out.text(value.text);
+      out.put(q);
+      break;
+    }
   }
 }
 
@@ -164,12 +164,7 @@ void put_command(Cursor& out, const Command& command, NumberCache* cache) {
     out.put(' ');
     out.text(p.name);
     out.put(':');
-    if (p.value.kind == ValueKind::Numeric) {
-      put_number(out, p.value.numeric, cache);
-      put_flag(out, p.value.flag);
-    } else {
-      put_value(out, p.value);
-    }
+    put_value(out, p.value, cache);
     ++pairs_on_line;
   }
   out.room(1);
@@ -198,7 +193,7 @@ void put_command(Cursor& out, const Command& command, NumberCache* cache) {
 
 void append_value(std::string& out, const Value& value) {
   Cursor c(out, out.size());
-  put_value(c, value);
+  put_value(c, value, nullptr);
   out.resize(c.used());
 }
 
