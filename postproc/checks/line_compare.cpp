@@ -47,6 +47,12 @@ std::string mask_datetime(std::string_view text) {
         while (j < text.size() && alpha(text[j])) ++j;
     }
     if (separators >= 2 || colons >= 1) {
+      // A clock time's AM or PM is part of it: a post run before noon prints AM where SolidCAM's
+      // run printed PM (`3:43:33PM`, `12:42:26 AM`).
+      std::size_t k = j < text.size() && blank(text[j]) ? j + 1 : j;
+      if (colons >= 1 && k + 1 < text.size() && (text[k] == 'A' || text[k] == 'P' || text[k] == 'a' || text[k] == 'p') &&
+          (text[k + 1] == 'M' || text[k + 1] == 'm') && (k + 2 == text.size() || !alpha(text[k + 2])))
+        j = k + 2;
       out += '#';
       i = j;
     } else {

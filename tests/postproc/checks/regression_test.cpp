@@ -55,6 +55,9 @@ TEST(LineCompare, OptionsTable) {
       // SolidCAM's Siemens posts: the day blank-padded, the hour not padded.
       {"N30 ; Date \t\t: JUL-12-2026-3:43:33PM", "N30 ; Date \t\t: JUL- 9-2026-11:04:10PM", &dates, true},
       {"N30 ; Date \t\t: JUL-12-2026-3:43:33PM", "N40 ; Date \t\t: JUL- 9-2026-11:04:10PM", &dates, false},
+      {"N30 ; Date \t\t: JUL-12-2026-3:43:33PM ", "N30 ; Date \t\t: NOV-28-2026-12:42:26AM ", &dates, true},
+      {"(TIME 3:43 PM)", "(TIME 9:05 am)", &dates, true},
+      {"(AT 3:43 PMX)", "(AT 3:43 AMX)", &dates, false},
       {"N30 ; Date : JUL-12-2026-3:43:33PM", "N30 ; Time : JUL- 9-2026-11:04:10PM", &dates, false},
       {"G1 X-16.35 Y2.", "G1 X-16.3504 Y2.0009", &tolerance, true},
       {"G1 X-16.35 Y2.", "G1 X-16.352 Y2.", &tolerance, false},
