@@ -67,14 +67,34 @@ struct Node {
   NodeKind kind = NodeKind::Constant;
   BinaryOp op = BinaryOp::Add;
   bool active_attribute = false;  // Attribute: active (true) or change (false)
-  bool simple = false;            // Constant, or Variable/Attribute of a scalar: read without evaluating
+  // Constant, or Variable/Attribute of a scalar: read without evaluating. Binary: a comparison of
+  // a scalar variable with a number constant or another scalar, `list` its Program::relations entry.
+  bool simple = false;
   std::uint32_t a = 0;            // Constant: constant index; Variable/Attribute: ref index; unary/binary: child
   std::uint32_t b = 0;            // binary: right child
-  std::uint32_t list = 0;         // Call: first argument in Program::lists
+  std::uint32_t list = 0;         // Call: first argument in Program::lists; simple Binary: relation
   std::uint32_t count = 0;        // Call: number of arguments
   std::uint32_t format = kNone;   // Call (tostr): node of the `:format` of the first argument
   const FunctionSignature* function = nullptr;
   SourcePos pos;
+};
+
+// `variable op constant` or `variable op variable` of scalars (`if blknum gt 99990`, `if
+// arc_plane eq XY`), the most common test of a post, resolved at compile time so that it costs
+// the cell reads and a compare. A constant is a number or logical, kept in both forms the type
+// rules of 4.5 compare with.
+struct Relation {
+  struct Cell {
+    std::uint32_t index = 0;  // global cell, or frame offset when `local`
+    bool local = false;
+  };
+  Cell left;
+  Cell right;               // when right_is_variable
+  bool right_is_variable = false;
+  bool numeric = false;     // the constant is numeric: compare as numbers whatever the variable holds
+  BinaryOp op = BinaryOp::Eq;
+  std::int64_t integer = 0;
+  double number = 0.0;
 };
 
 // Generate items (6.1). A group item is followed by its `count` member items.
@@ -156,6 +176,7 @@ public:
   std::vector<Procedure> procedures;
   std::vector<Instruction> code;
   std::vector<Node> nodes;
+  std::vector<Relation> relations;
   std::vector<VarRef> refs;
   std::vector<std::uint32_t> lists;  // index/argument node lists, group requirement refs
   std::vector<GenItem> items;

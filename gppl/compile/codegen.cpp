@@ -287,10 +287,39 @@ std::uint32_t Compiler::chain(const SyntaxNode& n, Context& ctx) {
     }
     node.a = left;
     node.b = expression(*n.children[i + 1], ctx);
+    if (node.kind == NodeKind::Binary && node.op >= BinaryOp::Eq) simple_relation(node);
     program_->nodes.push_back(node);
     left = std::uint32_t(program_->nodes.size() - 1);
   }
   return left;
+}
+
+void Compiler::simple_relation(Node& node) {
+  const Node& left = program_->nodes[node.a];
+  const Node& right = program_->nodes[node.b];
+  if (left.kind != NodeKind::Variable || !left.simple) return;
+  auto cell_of = [&](const Node& variable) {
+    const VarRef& ref = program_->refs[variable.a];
+    return Relation::Cell{ref.cell, ref.local};
+  };
+  Relation r;
+  r.left = cell_of(left);
+  r.op = node.op;
+  if (right.kind == NodeKind::Variable && right.simple) {
+    r.right_is_variable = true;
+    r.right = cell_of(right);
+  } else if (right.kind == NodeKind::Constant) {
+    const Value& c = program_->constants[right.a];
+    if (c.type == Type::String) return;  // strings compare as text (or fail): the general path
+    r.numeric = c.type == Type::Numeric;
+    r.integer = c.type == Type::Logical ? (c.logical ? 1 : 0) : c.integer;
+    r.number = c.type == Type::Numeric ? c.numeric : static_cast<double>(r.integer);
+  } else {
+    return;
+  }
+  node.simple = true;
+  node.list = std::uint32_t(program_->relations.size());
+  program_->relations.push_back(r);
 }
 
 std::uint32_t Compiler::call_node(const SyntaxNode& n, Context& ctx) {

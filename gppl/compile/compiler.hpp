@@ -69,6 +69,7 @@ private:
   std::uint32_t emit(OpCode op, SourcePos pos, std::uint32_t a = 0, std::uint32_t b = 0, std::uint32_t c = 0);
   std::uint32_t expression(const SyntaxNode& n, Context& ctx);
   std::uint32_t chain(const SyntaxNode& n, Context& ctx);
+  void simple_relation(Node& node);  // marks `variable op number` comparisons (Program::relations)
   std::uint32_t constant(Value v, SourcePos pos);
   std::uint32_t call_node(const SyntaxNode& n, Context& ctx);
   std::uint32_t reference(const SyntaxNode& variable, Context& ctx, bool target);

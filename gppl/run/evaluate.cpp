@@ -117,6 +117,19 @@ bool Interpreter::State::condition(std::uint32_t node) {
   const Node& n = program.nodes[node];
   switch (n.kind) {
     case NodeKind::Binary: {
+      if (n.simple) {  // compiled: `variable op constant` or `variable op variable`
+        const Relation& r = program.relations[n.list];
+        const Value& a = relation_cell(r.left).value;
+        if (a.type == Type::String) break;
+        if (!r.right_is_variable) {
+          if (r.numeric || a.type == Type::Numeric) return compare(r.op, number_of(a), r.number);
+          return compare(r.op, integer_of(a), r.integer);
+        }
+        const Value& b = relation_cell(r.right).value;
+        if (b.type == Type::String) break;
+        if (a.type == Type::Numeric || b.type == Type::Numeric) return compare(r.op, number_of(a), number_of(b));
+        return compare(r.op, integer_of(a), integer_of(b));
+      }
       if (!is_relation(n.op)) break;
       const Value* left = operand(program.nodes[n.a]);
       const Value* right = left ? operand(program.nodes[n.b]) : nullptr;
@@ -138,6 +151,10 @@ bool Interpreter::State::condition(std::uint32_t node) {
         return n.active_attribute ? c.active : c.changed;
       }
       break;
+    // What eval gives them, without a scratch value: `if change(xpos) or change(ypos)`.
+    case NodeKind::And: return condition(n.a) && condition(n.b);
+    case NodeKind::Or: return condition(n.a) || condition(n.b);
+    case NodeKind::Not: return !condition(n.a);
     default: break;
   }
   Value& v = push_scratch();

@@ -139,6 +139,7 @@ struct Interpreter::State {
   [[noreturn]] void fail_at(SourcePos pos, ErrorCode code, std::string_view name = {}, std::string_view detail = {}) const;
   // Scalars inline (every variable read of a procedure); arrays evaluate their indices out of line.
   Cell& cell(const VarRef& ref) { return ref.local ? stack[frames.back().base + ref.cell] : globals[ref.cell]; }
+  const Cell& relation_cell(const Relation::Cell& c) { return c.local ? stack[frames.back().base + c.index] : globals[c.index]; }
   Cell& element(const VarRef& ref) { return ref.indices == kNone ? cell(ref) : array_element(ref); }
   Cell& array_element(const VarRef& ref);
   // The value of a Constant or scalar Variable node without copying it; nullptr for other nodes.

@@ -81,6 +81,53 @@ INSTANTIATE_TEST_SUITE_P(
                     ConstantCase{"2.5 OP a", integer(2), {false, true, false, false, true, true}},
                     ConstantCase{"'x' OP a", string("y"), {false, true, true, true, false, false}}));
 
+// The compiled comparisons (Program::relations) read locals from the running frame and declared
+// globals from their cells: `if a OP b` against the evaluated `(a + 0) OP b`, a procedure called
+// from another so that the frame does not start at the bottom of the stack.
+TEST(FastCondition, LocalAndDeclaredOperands) {
+  const std::vector<std::pair<const char*, const char*>> typed = {
+      {"integer", "3"}, {"integer", "-2"}, {"numeric", "2.5"}, {"numeric", "3.0"}, {"logical", "TRUE"}};
+  for (const auto& [type_a, value_a] : typed) {
+    for (const auto& [type_b, value_b] : typed) {
+      for (const char* op : kRelations) {
+        for (const char* right : {"b", "g", "3", "2.5", "TRUE"}) {
+          const std::string source = std::string("@init_post\n  global ") + type_b + " g\nendp\n@inner\n  local integer pad\n  local " +
+                                     type_a + " a\n  local " + type_b + " b\n  pad = 7\n  a = " + value_a + "\n  b = " +
+                                     value_b + "\n  g = " + value_b + "\n  r = FALSE\n  if a " + op + " " + right +
+                                     "\n    r = TRUE\n  endif\n  e = (a + 0) " + op + " " + right + "\nendp\n"
+                                     "@t\n  local numeric outer\n  outer = 1\n  call @inner\nendp\n";
+          Post post(source);
+          post.call("@init_post");
+          post.call("@t");
+          EXPECT_EQ(post.get("r"), post.get("e")) << source;
+        }
+      }
+    }
+  }
+}
+
+// and/or/not in a condition test their operands as conditions (no scratch value): the same truth
+// and the same short-circuit as the evaluated expression, and the same error for a text operand.
+TEST(FastCondition, AndOrNot) {
+  const char* const values[] = {"TRUE", "FALSE", "0", "2", "0.5"};
+  for (const char* form : {"a and b", "a or b", "not a", "not (a and b)", "a or not b and a", "(a or b) and not (a and b)"}) {
+    for (const char* a : values) {
+      for (const char* b : values) {
+        const std::string source = std::string("@t\n  a = ") + a + "\n  b = " + b + "\n  r = FALSE\n  if " + form +
+                                   "\n    r = TRUE\n  endif\n  e = " + form + "\nendp\n";
+        Post post(source);
+        post.call("@t");
+        EXPECT_EQ(post.get("r"), post.get("e")) << source;
+      }
+    }
+  }
+  EXPECT_EQ(run_error("@t\n  global string s\n  if s or TRUE\n  endif\nendp\n"),
+            run_error("@t\n  global string s\n  e = s or TRUE\nendp\n"));
+  Post short_circuit("@t\n  global string s\n  r = 0\n  if TRUE or s\n    r = 1\n  endif\n  if FALSE and s\n    r = 2\n  endif\nendp\n");
+  short_circuit.call("@t");
+  EXPECT_EQ(short_circuit.get("r"), integer(1));
+}
+
 TEST(FastCondition, PlainLogicalVariable) {
   const std::string source = "@t\n  r = 0\n  if flag\n    r = 1\n  endif\nendp\n";
   for (const auto& [value, expected] :
