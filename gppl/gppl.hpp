@@ -126,6 +126,7 @@ std::string_view nearest_name(std::string_view name, std::span<const std::string
 struct LineOrigin {
   std::string_view procedure;  // "@line"
   int source_line = 0;
+  std::string_view source_file;  // the file of source_line: the post as compiled, or an include file
   // The line was started by `nl` or `nb`, which write the line break before the line (the first
   // line of the output has none when text came before any nl/nb). SolidCAM files therefore begin
   // with an empty line and end without a final break (docs/engine.md, "Line breaks").

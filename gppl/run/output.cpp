@@ -34,6 +34,7 @@ void Interpreter::State::open_line(bool after_break) {
   if (!frames.empty()) origin.procedure = program.procedures[frames.back().procedure].name;
   else origin.procedure = {};
   origin.source_line = current ? int(current->pos.line) : 0;
+  origin.source_file = current ? std::string_view(program.files[current->pos.file]) : std::string_view();
 }
 
 void Interpreter::State::append_opening(std::string_view text) {

@@ -90,7 +90,9 @@ RegressionComparer::RegressionComparer(Opener opener, CompareOptions options, st
 std::string RegressionComparer::describe(const LineOrigin& o) const {
   if (o.command.empty()) return o.procedure.empty() ? "" : fmt::format("procedure {}", o.procedure);
   std::string s = fmt::format("command #{} {}", o.command_index, o.command);
-  if (!o.procedure.empty()) s += fmt::format(", procedure {} ({}:{})", o.procedure, post_name_, o.source_line);
+  if (!o.procedure.empty())
+    s += fmt::format(", procedure {} ({}:{})", o.procedure, o.include_file.empty() ? std::string_view(post_name_) : o.include_file,
+                     o.source_line);
   return s;
 }
 

@@ -27,7 +27,9 @@ public:
     std::string right;
     if (!e.origin.command.empty()) right = fmt::format("#{} {}", e.origin.command_index, e.origin.command);
     if (!e.origin.procedure.empty())
-      right += fmt::format("{}{} ({}:{})", right.empty() ? "" : " -> ", e.origin.procedure, post_, e.origin.source_line);
+      right += fmt::format("{}{} ({}:{})", right.empty() ? "" : " -> ", e.origin.procedure,
+                           e.origin.include_file.empty() ? std::string_view(post_) : e.origin.include_file,
+                           e.origin.source_line);
     if (e.directive) right += "  [directive]";
     out_ << fmt::format("{:<44} | {}\n", left, right);
   }

@@ -55,7 +55,6 @@ constexpr std::string_view kTail = R"html(</script>
 const D = JSON.parse(document.getElementById('data').textContent);
 const $ = (id) => document.getElementById(id);
 $('what').textContent = D.job + '  ·  ' + D.post;
-$('srcname').textContent = D.post;
 const ROW = 18;
 // A list that draws only the rows in view (and a margin): a 200 000-line program keeps ~100 nodes.
 function VList(el, count, render) {
@@ -86,7 +85,7 @@ function VList(el, count, render) {
     show(i) { const top = i * ROW; if (top < el.scrollTop || top > el.scrollTop + el.clientHeight - ROW) el.scrollTop = Math.max(0, top - el.clientHeight / 2); draw(true); },
   };
 }
-let file = 0, selLine = -1, selCommand = -1, selGpp = 0;
+let file = 0, selLine = -1, selCommand = -1, selGpp = 0, source = -1;
 // Where each command's segments are, and its first NC line (per file).
 const segOf = new Map();
 for (let s = 0; s < D.segCommand.length; s++) {
@@ -96,8 +95,10 @@ for (let s = 0; s < D.segCommand.length; s++) {
 }
 let lineOf = new Map();  // command -> its first line in the file shown
 function firstLineOf(command) { const l = lineOf.get(command); return l === undefined ? -1 : l; }
+// The GPP lines that wrote output, as 'source:line'.
 const wrote = new Set();
-for (const f of D.files) for (const l of f.lines) if (l[3]) wrote.add(l[3]);
+for (const f of D.files) for (const l of f.lines) if (l[3]) wrote.add(l[4] + ':' + l[3]);
+const written = (l) => D.procedures[l[2]] + ' (' + D.sources[l[4]].name + ':' + l[3] + ')';
 let nc;
 function showFile(f) {
   file = f;
@@ -111,21 +112,29 @@ function showFile(f) {
     r.innerHTML = '<span class="n"></span>';
     r.firstChild.textContent = i + 1;
     r.appendChild(document.createTextNode(l[0]));
-    r.title = l[1] >= 0 ? ('#' + l[1] + ' ' + D.procedures[l[2]] + ' (' + D.post + ':' + l[3] + ')') : '';
+    r.title = l[1] >= 0 ? ('#' + l[1] + ' ' + written(l)) : '';
     r.addEventListener('click', () => select(i));
     return r;
   });
   nc.draw(true);
 }
-const src = VList($('src'), D.source.length, (i) => {
-  const r = document.createElement('div');
-  r.className = 'row' + (wrote.has(i + 1) ? ' wrote' : '') + (i + 1 === selGpp ? ' sel' : '');
-  r.innerHTML = '<span class="n"></span>';
-  r.firstChild.textContent = i + 1;
-  r.appendChild(document.createTextNode(D.source[i]));
-  r.addEventListener('click', () => { const l = D.files[file].lines.findIndex((x) => x[3] === i + 1); if (l >= 0) select(l); });
-  return r;
-});
+// The source pane shows one file: the post, or the include file of the line selected last.
+let src;
+function showSource(s) {
+  source = s;
+  $('srcname').textContent = D.sources[s].name;
+  const text = D.sources[s].lines;
+  src = VList($('src'), text.length, (i) => {
+    const r = document.createElement('div');
+    r.className = 'row' + (wrote.has(s + ':' + (i + 1)) ? ' wrote' : '') + (i + 1 === selGpp ? ' sel' : '');
+    r.innerHTML = '<span class="n"></span>';
+    r.firstChild.textContent = i + 1;
+    r.appendChild(document.createTextNode(text[i]));
+    r.addEventListener('click', () => { const l = D.files[file].lines.findIndex((x) => x[3] === i + 1 && x[4] === s); if (l >= 0) select(l); });
+    return r;
+  });
+}
+showSource(0);
 D.files.forEach((f, i) => { const o = document.createElement('option'); o.value = i; o.textContent = f.name; $('file').appendChild(o); });
 $('file').addEventListener('change', (e) => { selLine = -1; showFile(Number(e.target.value)); });
 // Plots: XY (top) and XZ, each fitted to the toolpath.
@@ -193,9 +202,10 @@ function select(i) {
   const l = D.files[file].lines[i];
   selLine = i; selCommand = l[1]; selGpp = l[3];
   nc.show(i);
+  if (selGpp && l[4] !== source) showSource(l[4]);
   if (selGpp) src.show(selGpp - 1); else src.draw(true);
   $('info').textContent = D.files[file].name + ':' + (i + 1) + '  ' + l[0] + '\n' +
-    (l[1] >= 0 ? 'toolpath command #' + l[1] + ', written by ' + D.procedures[l[2]] + ' (' + D.post + ':' + l[3] + ')' : 'no toolpath command');
+    (l[1] >= 0 ? 'toolpath command #' + l[1] + ', written by ' + written(l) : 'no toolpath command');
   redraw();
   document.body.dataset.selected = JSON.stringify({ line: i + 1, command: selCommand, gpp: selGpp, segments: (segOf.get(selCommand) || []).length });
 }
@@ -231,6 +241,7 @@ addEventListener('resize', () => { for (const v of views) fit(v); redraw(); });
     selected: document.body.dataset.selected ? JSON.parse(document.body.dataset.selected) : null,
     ncHighlighted: selRow ? Number(selRow.dataset.line) : 0,
     srcHighlighted: srcRow ? Number(srcRow.firstChild.textContent) : 0,
+    srcFile: D.sources[source].name,
     elements: document.getElementsByTagName('*').length,
   });
 })();
@@ -256,6 +267,9 @@ void ExplainPage::on_line(const LineEvent& e) {
     if (added) procedures_.emplace_back(e.origin.procedure);
     line.procedure = it->second;
     line.gpp_line = static_cast<std::uint32_t>(std::max(0, e.origin.source_line));
+    auto [source, new_source] = source_ids_.emplace(std::string(e.origin.include_file), static_cast<std::uint32_t>(sources_.size()));
+    if (new_source) sources_.emplace_back(e.origin.include_file);
+    line.source = source->second;
   }
   files_[current_].lines.push_back(std::move(line));
 }
@@ -320,18 +334,25 @@ std::string ExplainPage::html() const {
         for (std::size_t at = text.find(marker); at != std::string::npos; at = text.find(marker, at + value.size()))
           text.replace(at, marker.size(), value);
       }
-      lines.push_back(json::array({text, l.command, l.procedure, l.gpp_line}));
+      lines.push_back(json::array({text, l.command, l.procedure, l.gpp_line, l.source}));
     }
     files.push_back({{"name", f.name}, {"lines", std::move(lines)}});
   }
   data["files"] = std::move(files);
-  json source = json::array();
-  std::ifstream in(post_path_, std::ios::binary);
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    source.push_back(std::move(line));
+  // The post, then each include file that wrote a line (named relative to the post's folder).
+  json sources = json::array();
+  for (const std::string& name : sources_) {
+    const std::filesystem::path path = name.empty() ? std::filesystem::path(post_path_)
+                                                    : std::filesystem::path(post_path_).parent_path() / name;
+    json text = json::array();
+    std::ifstream in(path, std::ios::binary);
+    for (std::string line; std::getline(in, line);) {
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      text.push_back(std::move(line));
+    }
+    sources.push_back({{"name", name.empty() ? data["post"].get<std::string>() : name}, {"lines", std::move(text)}});
   }
-  data["source"] = std::move(source);
+  data["sources"] = std::move(sources);
   data["segments"] = segments_;
   data["segCommand"] = segment_commands_;
   data["segRapid"] = segment_rapid_;

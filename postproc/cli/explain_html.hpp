@@ -1,6 +1,6 @@
 // `postproc explain --html FILE`: one self-contained page (no network, no external script) with the
 // NC program, each line linked to the GPP line and the toolpath command that produced it, the post's
-// source with the lines that wrote output marked, and XY and XZ plots of the toolpath where a click
+// source (and its include files') with the lines that wrote output marked, and XY and XZ plots of the toolpath where a click
 // on a line highlights its segment and a click on a segment selects its line. Lists are
 // virtualised, so a 200 000-line program opens and scrolls as a short one (docs/engine.md, "explain").
 #pragma once
@@ -34,6 +34,7 @@ private:
     std::int64_t command = -1;  // toolpath command index, -1: none
     std::uint32_t procedure = 0;  // into procedures_
     std::uint32_t gpp_line = 0;
+    std::uint32_t source = 0;  // into sources_: 0 the post, else an include file
   };
   struct File {
     std::string name;
@@ -44,6 +45,8 @@ private:
   std::string job_, post_path_;
   std::vector<File> files_;
   std::vector<std::string> procedures_{""};
+  std::vector<std::string> sources_{""};  // include files by their name relative to the post's folder
+  std::map<std::string, std::uint32_t, std::less<>> source_ids_{{"", 0}};
   std::map<std::string, std::uint32_t, std::less<>> procedure_ids_{{"", 0}};
   std::map<std::uint32_t, std::string> slots_;
   std::size_t current_ = 0;       // the file the last line went to

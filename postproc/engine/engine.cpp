@@ -107,7 +107,7 @@ public:
         options_(options),
         files_(files),
         enums_(engine.drill_cycle_names()),
-        sink_(files, options.observer),
+        sink_(files, options.observer, engine.options().post),
         uses_line_functions_(gppl::uses_line_functions(*program)),
         procedures_(gppl::procedures(*program)),
         interpreter_(std::move(program), sink_),

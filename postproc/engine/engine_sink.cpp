@@ -1,5 +1,6 @@
 #include "postproc/engine/engine_sink.hpp"
 
+#include <filesystem>
 #include <optional>
 
 #include "postproc/engine/directive.hpp"
@@ -17,6 +18,16 @@ void EngineSink::write_line(std::string_view line, const gppl::LineOrigin& origi
   write_observed(line, origin, maybe_directive);
 }
 
+std::string_view EngineSink::include_name(std::string_view file) {
+  if (file.empty() || file == post_) return {};
+  for (const auto& [path, name] : include_names_)
+    if (path == file) return name;
+  const std::filesystem::path included(file), folder = std::filesystem::path(post_).parent_path();
+  std::string name = included.lexically_relative(folder.empty() ? "." : folder).generic_string();
+  if (name.empty()) name = included.generic_string();  // another root: the path as it was opened
+  return include_names_.emplace_back(std::string(file), std::move(name)).second;
+}
+
 // The count includes the empty first line the break before a file's first block makes.
 void EngineSink::write_to_file(std::string_view line, bool after_break) {
   lines += files_.break_starts_file(after_break) ? 2 : 1;
@@ -32,7 +43,7 @@ void EngineSink::write_observed(std::string_view line, const gppl::LineOrigin& o
     file_name_ = files_.current_name();
     LineEvent e{file_name_, line, directive.has_value(), files_.current_is_main(), false,
                 {own ? command_index : opener_index_, own ? command_name : std::string_view(opener_name_),
-                 origin.procedure, origin.source_line}};
+                 origin.procedure, origin.source_line, include_name(origin.source_file)}};
     if (files_.break_starts_file(origin.after_break)) {
       LineEvent empty = e;
       empty.text = {};
@@ -50,7 +61,8 @@ void EngineSink::write_observed(std::string_view line, const gppl::LineOrigin& o
     if (observer_ && directive->verb == Directive::Verb::Copy) {
       // The copied text becomes lines of the current file, attributed to the command that copies.
       LineEvent copied{file_name_, {}, false, files_.current_is_main(), false,
-                       {command_index, command_name, origin.procedure, origin.source_line}};
+                       {command_index, command_name, origin.procedure, origin.source_line,
+                        include_name(origin.source_file)}};
       files_.execute(*directive, [&](std::string_view text) {
         copied.text = text;
         observer_->on_line(copied);

@@ -5,7 +5,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <string>
+#include <utility>
 #include <string_view>
 
 #include "gppl/gppl.hpp"
@@ -17,7 +19,9 @@ namespace postproc {
 
 class EngineSink final : public gppl::OutputSink {
 public:
-  EngineSink(OutputFiles& files, LineObserver* observer) : files_(files), observer_(observer) {}
+  // `post`: the post's path as compiled, so that lines of its include files can be told apart.
+  EngineSink(OutputFiles& files, LineObserver* observer, std::string post)
+      : files_(files), observer_(observer), post_(std::move(post)) {}
 
   void write_line(std::string_view line, const gppl::LineOrigin& origin) override;
 
@@ -56,6 +60,8 @@ public:
 private:
   void write_observed(std::string_view line, const gppl::LineOrigin& origin, bool maybe_directive);
   void write_to_file(std::string_view line, bool after_break);
+  // LineOrigin::include_file of a line written by a statement of `file`; empty for the post itself.
+  std::string_view include_name(std::string_view file);
 
   bool wrote_in_command_ = false;
   std::size_t opener_index_ = 0;
@@ -63,6 +69,10 @@ private:
   OutputFiles& files_;
   LineObserver* observer_;
   std::string file_name_;
+  std::string post_;
+  // Include files by their path as compiled, and their names relative to the post's folder: a
+  // deque, so that the names handed out stay where they are.
+  std::deque<std::pair<std::string, std::string>> include_names_;
 };
 
 }  // namespace postproc

@@ -14,6 +14,9 @@ struct LineOrigin {
   std::string_view command;       // "@arc"
   std::string_view procedure;     // the GPP procedure that started the line ("@arc", "@rapid_move")
   int source_line = 0;            // its line in the post
+  // The file of source_line when it is not the post itself: an include file, by its path
+  // relative to the post's folder (as `include` names it, usually).
+  std::string_view include_file;
 };
 
 }  // namespace postproc

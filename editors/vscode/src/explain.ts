@@ -2,13 +2,16 @@
 // wrote it. The format (docs/engine.md, "explain"):
 //   ==> SAMPLE.NC <==
 //      9 N70 T3 M6                               | #5 @change_tool -> @change_tool (fanuc.gpp:147)
+// The GPP file is the post by its name, or an include file by its path relative to the post's folder.
+import * as path from 'path';
+
 export interface ExplainedLine {
   ncFile: string;     // the output file's name ("SAMPLE.NC")
   ncLine: number;     // 1-based
   text: string;       // the NC line
   command: string;    // "#5 @change_tool": the toolpath command
   procedure: string;  // "@change_tool": the GPP procedure that wrote it
-  gppFile: string;    // "fanuc.gpp"
+  gppFile: string;    // "fanuc.gpp", "lib/moves.inc"
   gppLine: number;    // 1-based
 }
 
@@ -41,4 +44,9 @@ export function parseExplain(output: string): ExplainedLine[] {
     });
   }
   return lines;
+}
+
+// Where the GPP file of an explained line is, for the post at `post`.
+export function gppPath(post: string, gppFile: string): string {
+  return path.resolve(path.dirname(post), gppFile);
 }

@@ -7,7 +7,7 @@ import * as fs from 'fs';
 import * as path from 'path';
 import * as vscode from 'vscode';
 import { LanguageClient, LanguageClientOptions, ServerOptions } from 'vscode-languageclient/node';
-import { ExplainedLine, parseExplain } from './explain';
+import { ExplainedLine, gppPath, parseExplain } from './explain';
 
 let client: LanguageClient | undefined;
 
@@ -77,10 +77,11 @@ async function explainLine(): Promise<void> {
   }
   const here = editor.document.uri.fsPath;
   const line = editor.selection.active.line + 1;
-  if (here === lastRun.post) {  // a GPP line: the NC lines it wrote
-    const written = lastRun.lines.filter((l) => l.gppLine === line && path.basename(lastRun!.post) === l.gppFile);
+  const post = lastRun.post;
+  if (here === post || lastRun.lines.some((l) => gppPath(post, l.gppFile) === here)) {  // a GPP line: the NC lines it wrote
+    const written = lastRun.lines.filter((l) => l.gppLine === line && gppPath(post, l.gppFile) === here);
     if (written.length === 0) {
-      vscode.window.showInformationMessage(`Line ${line} of the post wrote nothing in ${path.basename(lastRun.nc)}.`);
+      vscode.window.showInformationMessage(`Line ${line} of ${path.basename(here)} wrote nothing in ${path.basename(lastRun.nc)}.`);
       return;
     }
     const pick = await vscode.window.showQuickPick(
@@ -100,7 +101,7 @@ async function explainLine(): Promise<void> {
     vscode.window.showInformationMessage(`No explanation for line ${line} of ${ncName}: post again with "Post with...".`);
     return;
   }
-  const gpp = path.join(path.dirname(lastRun.post), found.gppFile);
+  const gpp = gppPath(lastRun.post, found.gppFile);
   const doc = await vscode.window.showTextDocument(vscode.Uri.file(gpp), { viewColumn: vscode.ViewColumn.Beside });
   const at = new vscode.Position(found.gppLine - 1, 0);
   doc.selection = new vscode.Selection(at, at);

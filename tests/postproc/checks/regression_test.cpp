@@ -94,7 +94,7 @@ postproc::RegressionComparer comparer_for(std::deque<std::string> main_lines) {
 
 TEST(RegressionComparer, ReportsTheFirstDifferenceWithItsOrigin) {
   auto c = comparer_for({"%", "G0 X1.", "G2 X2. R1.", "M30"});
-  postproc::LineOrigin origin{21, "@arc", "@line", 120};
+  postproc::LineOrigin origin{21, "@arc", "@line", 120, {}};
   c.produced("OUT.TAP", "%", origin);
   c.produced("OUT.TAP", "G0 X1.", origin);
   c.produced("OUT.TAP", "   Y2.G2 X2. R1.", origin);
@@ -123,7 +123,7 @@ TEST(RegressionComparer, MissingAndExtraLinesAreDifferences) {
 
   auto longer = comparer_for({"%"});
   longer.produced("OUT.TAP", "%", {});
-  longer.produced("OUT.TAP", "M30", {3, "@end_program", "@end_program", 40});
+  longer.produced("OUT.TAP", "M30", {3, "@end_program", "@end_program", 40, {}});
   longer.finish();
   EXPECT_EQ(longer.report(),
             "OUT.TAP:2: the output has more lines than expected\n"
@@ -165,7 +165,9 @@ TEST(RegressionComparer, ParityFigureAlignsTheLines) {
     EXPECT_EQ(figures[0].identical, c.identical);
     EXPECT_EQ(figures[0].first_difference, c.first_difference);
     EXPECT_EQ(figures[0].written, !c.produced.empty());
-    if (c.produced.empty()) EXPECT_EQ(r.diff_report(), "@@ OUT.NC: the run wrote no such file (2 lines expected) @@\n");
+    if (c.produced.empty()) {
+      EXPECT_EQ(r.diff_report(), "@@ OUT.NC: the run wrote no such file (2 lines expected) @@\n");
+    }
   }
 }
 
@@ -187,14 +189,18 @@ TEST(RegressionComparer, FileLinesEndWithTheLastBreak) {
 TEST(RegressionComparer, DiffNamesTheProcedureOfEachLineOfOurs) {
   auto c = comparer_for({"%", "M8", "G0 X1.", "M30"});
   c.keep_origins();
-  postproc::LineOrigin origin{4, "@rapid_move", "@rapid_move", 33};
-  for (const char* line : {"%", "G0 X1.", "G0 X1.", "M30"}) c.produced("OUT.TAP", line, origin);
+  const postproc::LineOrigin origin{4, "@rapid_move", "@rapid_move", 33, {}};
+  // A line an include file's statement wrote names that file, not the post.
+  const postproc::LineOrigin included{4, "@rapid_move", "@rapid_move", 7, "lib/moves.inc"};
+  for (const char* line : {"%", "G0 X1."}) c.produced("OUT.TAP", line, origin);
+  c.produced("OUT.TAP", "G0 X1.", included);
+  c.produced("OUT.TAP", "M30", origin);
   c.finish();
   EXPECT_EQ(c.diff_report(),
             "@@ OUT.TAP expected line 2, output line 2 @@\n"
             "- M8\n"
             "@@ OUT.TAP expected line 4, output line 3 @@\n"
-            "+ G0 X1.    <- command #4 @rapid_move, procedure @rapid_move (fanuc.gpp:33)\n");
+            "+ G0 X1.    <- command #4 @rapid_move, procedure @rapid_move (lib/moves.inc:7)\n");
 }
 
 TEST(RegressionComparer, ExpectedLinesOfATraceAreItsOutputLinesInOrder) {

@@ -84,6 +84,35 @@ TEST(Cli, TraceFromTheCommandLine) {
   std::filesystem::remove_all(dir);
 }
 
+// A line written by a statement of an include file names that file (relative to the post's folder)
+// and its line, in explain's text and page and in test --diff; the post's own lines name the post.
+TEST(Cli, LinesOfIncludeFilesNameTheirFile) {
+  const auto dir = std::filesystem::temp_directory_path() / ("postproc-include-origin-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir / "lib");
+  std::ofstream(dir / "p.gpp") << "@start_of_file\n  {nl, '%'}\nendp\n@rapid_move\nendp\ninc 'lib/moves.inc'\n";
+  std::ofstream(dir / "lib" / "moves.inc") << "; moves\n@line\n  {nl, 'G1'}\nendp\n";
+  std::ofstream(dir / "j.trace") << "@start_of_file\n@rapid_move\nxpos : 0\nypos : 0\nzpos : 5\n"
+                                    "@line\nxpos : 1\nypos : 0\nzpos : 0\nfeed : 100\n";
+  std::ofstream(dir / "expected.nc") << "\n%\nG2";
+  const std::string post = (dir / "p.gpp").string(), job = (dir / "j.trace").string();
+  const auto text = run({"explain", "-q", "--post", post, job});
+  EXPECT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("% "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("| #0 @start_of_file -> @start_of_file (p.gpp:2)"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("| #2 @line -> @line (lib/moves.inc:3)"), std::string::npos) << text.out;
+  const auto diff = run({"test", "-q", job, "--post", post, "--expect", (dir / "expected.nc").string(), "--diff"});
+  EXPECT_EQ(diff.code, 1);
+  EXPECT_NE(diff.out.find("procedure @line (lib/moves.inc:3)"), std::string::npos) << diff.out << diff.err;
+  const auto page = run({"explain", "-q", "--post", post, "--html", (dir / "page.html").string(), job});
+  EXPECT_EQ(page.code, 0) << page.err;
+  std::ifstream in(dir / "page.html");
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(html.find(R"({"lines":["; moves","@line","  {nl, 'G1'}","endp"],"name":"lib/moves.inc"})"), std::string::npos)
+      << html.substr(html.find("\"sources\""), 400);
+  EXPECT_NE(html.find(R"(["G1",2,)"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
 // --progress draws the bar into a log too (stderr is no terminal here).
 TEST(Cli, ProgressCanBeForced) {
   const auto dir = std::filesystem::temp_directory_path() / ("postproc-progress-" + std::to_string(::getpid()));

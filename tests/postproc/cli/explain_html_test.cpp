@@ -111,6 +111,30 @@ TEST(ExplainHtml, ClickingALineHighlightsItsSourceAndSegment) {
   std::printf("screenshot kept: %s\n", png.string().c_str());
 }
 
+// A line written by an include file's statement shows that file in the source pane, at its line.
+TEST(ExplainHtml, ALineOfAnIncludeFileShowsThatFile) {
+  const std::string browser = chromium();
+  if (browser.empty()) GTEST_SKIP() << "chromium is not installed (apt-get install chromium): the browser test needs it";
+  const fs::path dir = kDir / "include";
+  fs::create_directories(dir / "lib");
+  std::ofstream(dir / "p.gpp") << "@start_of_file\n  {nl, '%'}\nendp\n@rapid_move\nendp\ninc 'lib/moves.inc'\n";
+  std::ofstream(dir / "lib" / "moves.inc") << "; moves\n@line\n  {nl, 'G1'}\nendp\n";
+  std::ofstream(dir / "j.trace") << "@start_of_file\n@rapid_move\nxpos : 0\nypos : 0\nzpos : 5\n"
+                                    "@line\nxpos : 1\nypos : 0\nzpos : 0\nfeed : 100\n";
+  const fs::path page = dir / "page.html";
+  const auto r = run_cli({"explain", "-q", "--post", (dir / "p.gpp").string(), "--html", page.string(), (dir / "j.trace").string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  // NC line 1 is the empty line before the first block: '%' is line 2, G1 line 3.
+  const json included = selftest(browser, page, "#select=3");
+  ASSERT_TRUE(included.is_object()) << "no self-test result in the page's DOM";
+  EXPECT_EQ(included["srcFile"], "lib/moves.inc");
+  EXPECT_EQ(included["srcHighlighted"], 3);
+  const json own = selftest(browser, page, "#select=2");
+  ASSERT_TRUE(own.is_object());
+  EXPECT_EQ(own["srcFile"], "p.gpp");
+  EXPECT_EQ(own["srcHighlighted"], 2);
+}
+
 // 200 000 NC lines: the lists draw only what is in view, so the page keeps a few hundred elements.
 TEST(ExplainHtml, ALongProgramStaysSmallInTheBrowser) {
   const std::string browser = chromium();

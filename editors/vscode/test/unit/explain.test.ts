@@ -3,7 +3,7 @@ import { strict as assert } from 'node:assert';
 import * as cp from 'node:child_process';
 import * as path from 'node:path';
 import { test } from 'node:test';
-import { parseExplain } from '../../src/explain';
+import { gppPath, parseExplain } from '../../src/explain';
 import { postproc, repository } from '../support';
 
 test('explain output maps each NC line to its command and GPP line', () => {
@@ -28,4 +28,13 @@ test('a line with a bar of its own keeps its text', () => {
   assert.deepEqual(line, {
     ncFile: 'A.NC', ncLine: 7, text: '(A | B)', command: '#3 @message', procedure: '@message', gppFile: 'p.gpp', gppLine: 12,
   });
+});
+
+test('a line of an include file names it relative to the post, and resolves there', () => {
+  const [line] = parseExplain('==> A.NC <==\n   3 G1 | #2 @line -> @line (lib/moves.inc:3)\n');
+  assert.equal(line.gppFile, 'lib/moves.inc');
+  assert.equal(line.gppLine, 3);
+  assert.equal(gppPath('/posts/p.gpp', line.gppFile), path.resolve('/posts/lib/moves.inc'));
+  assert.equal(gppPath('/posts/p.gpp', 'p.gpp'), path.resolve('/posts/p.gpp'));
+  assert.equal(gppPath('/posts/p.gpp', '/elsewhere/common.inc'), path.resolve('/elsewhere/common.inc'));
 });
