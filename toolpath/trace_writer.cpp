@@ -18,7 +18,7 @@ constexpr std::size_t kNumberRoom = kMaxNumberText + 1;  // a number or an integ
 
 // Copies a short text without a call: two overlapping fixed-size copies (names and enumeration
 // words are mostly 4 to 16 bytes).
-void copy_short(char* to, const char* from, std::size_t n) {
+[[gnu::always_inline]] inline void copy_short(char* to, const char* from, std::size_t n) {
   if (n >= 8 && n <= 16) {
     std::memcpy(to, from, 8);
     std::memcpy(to + n - 8, from + n - 8, 8);
@@ -34,179 +34,162 @@ void copy_short(char* to, const char* from, std::size_t n) {
   }
 }
 
-// Text appended through a cursor into a string kept larger than what is written: one capacity
-// check per piece instead of one per character, no formatting library on the way. The string
-// holds `used` bytes of text; the rest is room, cut off by the owner when it is done.
-class Cursor {
-public:
-  Cursor(std::string& s, std::size_t used) : s_(s) {
-    if (s_.size() < used + 256) s_.resize(used + 256);
-    p_ = s_.data() + used;
-    end_ = s_.data() + s_.size();
-  }
-  std::size_t used() const { return static_cast<std::size_t>(p_ - s_.data()); }
-  // At least n bytes of room at the cursor.
-  void room(std::size_t n) {
-    if (static_cast<std::size_t>(end_ - p_) < n) grow(n);
-  }
-  void put(char c) { *p_++ = c; }  // after room()
-  void text(std::string_view t) {
-    room(t.size());
-    copy_short(p_, t.data(), t.size());
-    p_ += t.size();
-  }
-  void blanks(std::size_t n) {
-    room(n);
-    std::memset(p_, ' ', n);
-    p_ += n;
-  }
-  char*& at() { return p_; }
+// Blanks to copy from: a run of blanks is written as one fixed-size copy (kHeadRoom bytes).
+constexpr std::size_t kHeadRoom = 32;  // a continuation line's head: '\n', the blanks and "..> "
+constexpr char kBlanks[kHeadRoom + 1] = "                                ";
+static_assert(kArrowColumn + 5 <= kHeadRoom);
 
-private:
-  void grow(std::size_t n) {
-    const std::size_t u = used();
-    s_.resize(std::max(s_.size() * 2, u + n + 256));
-    p_ = s_.data() + u;
-    end_ = s_.data() + s_.size();
-  }
-  std::string& s_;
-  char* p_;
-  char* end_;
-};
+// Writes `n` (at most kArrowColumn + 2) blanks at `p`; it may write up to kHeadRoom bytes.
+[[gnu::always_inline]] inline char* put_blanks(char* p, std::size_t n) {
+  std::memcpy(p, kBlanks, kHeadRoom);
+  return p + n;
+}
 
-void put_flag(Cursor& out, ChangeFlag flag) {  // after room()
-  if (flag == ChangeFlag::Changed) out.put('T');
-  if (flag == ChangeFlag::Unchanged) out.put('F');
+[[gnu::always_inline]] inline char* put_text(char* p, std::string_view t) {
+  copy_short(p, t.data(), t.size());
+  return p + t.size();
+}
+
+char* put_flag(char* p, ChangeFlag flag) {
+  if (flag == ChangeFlag::Changed) *p++ = 'T';
+  if (flag == ChangeFlag::Unchanged) *p++ = 'F';
+  return p;
 }
 
 // Writes a numeric value, through the cache when there is one.
-void put_number(Cursor& out, double v, NumberCache* cache) {
-  if (!cache) {
-    out.at() = write_number_text(out.at(), v);
-    return;
-  }
+[[gnu::always_inline]] inline char* put_number(char* p, double v, NumberCache* cache) {
+  if (!cache) return write_number_text(p, v);
   const std::uint64_t bits = std::bit_cast<std::uint64_t>(v);
   NumberCache::Entry& e = cache->entries[(bits * 0x9E3779B97F4A7C15u) >> 58];
   if (e.length > 0 && e.bits == bits) {
-    std::memcpy(out.at(), e.text, sizeof e.text);  // the room is there: kNumberRoom
-    out.at() += e.length;
-    return;
+    std::memcpy(p, e.text, sizeof e.text);  // the room is there: kNumberRoom
+    return p + e.length;
   }
-  char* const start = out.at();
-  out.at() = write_number_text(start, v);
-  const auto length = static_cast<std::size_t>(out.at() - start);
+  char* const end = write_number_text(p, v);
+  const auto length = static_cast<std::size_t>(end - p);
   if (length <= sizeof e.text) {
     e.bits = bits;
     e.length = static_cast<std::uint32_t>(length);
-    std::memcpy(e.text, start, sizeof e.text);  // the bytes past the text are never copied out
+    std::memcpy(e.text, p, sizeof e.text);  // the bytes past the text are never copied out
   }
+  return end;
 }
 
-void put_value(Cursor& out, const Value& value, NumberCache* cache) {
+// The most bytes put_value writes for `value` (and may touch past its text).
+std::size_t value_room(const Value& value) {
   switch (value.kind) {
     case ValueKind::Integer:
-      out.room(kNumberRoom);
-      out.at() = std::to_chars(out.at(), out.at() + kNumberRoom, value.integer).ptr;
-      put_flag(out, value.flag);
-      break;
-    case ValueKind::Numeric:
-      out.room(kNumberRoom);
-      put_number(out, value.numeric, cache);
-      put_flag(out, value.flag);
-      break;
-    case ValueKind::Logical: out.text(value.logical ? "true" : "false"); break;
-    case ValueKind::Enum: out.text(value.text); break;
-    case ValueKind::String: {
-      const char q = value.text.find('\'') == std::string::npos ? '\'' : '"';
-      out.room(value.text.size() + 2);
-      out.put(q);
-      out.text(value.text);
-      out.put(q);
-      break;
-    }
+    case ValueKind::Numeric: return kNumberRoom;
+    case ValueKind::Logical: return 5;
+    case ValueKind::Enum: return value.text.size();
+    case ValueKind::String: return value.text.size() + 2;
   }
+  return 0;
 }
 
-void put_command(Cursor& out, const Command& command, NumberCache* cache) {
-  std::size_t line_start = out.used();
-  out.room(kNumberRoom + 1);
-  out.put('(');
-  out.at() = std::to_chars(out.at(), out.at() + kNumberRoom, command.depth).ptr;
-  out.put(')');
-  out.text(command.name);
+// Writes the value at `p`, which has value_room(value) bytes of room. Inline in the parameter loop.
+[[gnu::always_inline]] inline char* put_value(char* p, const Value& value, NumberCache* cache) {
+  switch (value.kind) {
+    case ValueKind::Integer: return put_flag(std::to_chars(p, p + kNumberRoom, value.integer).ptr, value.flag);
+    case ValueKind::Numeric: return put_flag(put_number(p, value.numeric, cache), value.flag);
+    case ValueKind::Logical: return put_text(p, value.logical ? "true" : "false");
+    case ValueKind::Enum: return put_text(p, value.text);
+    case ValueKind::String: {
+      const char q = value.text.find('\'') == std::string::npos ? '\'' : '"';
+      *p++ = q;
+      p = put_text(p, value.text);
+      *p++ = q;
+      return p;
+    }
+  }
+  return p;
+}
+
+// The most bytes put_command writes for `command`: every piece at its largest, and a continuation
+// line's head before every parameter (more than the wrapping ever starts). With this room known
+// once, the pieces are written through a plain pointer, without a check each.
+std::size_t command_room(const Command& command) {
+  std::size_t n = 2 + kNumberRoom + command.name.size() + kHeadRoom + 4;
+  for (const auto& p : command.parameters) n += kHeadRoom + 2 + p.name.size() + value_room(p.value);
+  for (const auto& t : command.trace) n += kHeadRoom + t.text.size() + 1;
+  return n;
+}
+
+// Writes `command` at `p`, which has command_room(command) bytes of room; returns the end.
+char* put_command(char* p, const Command& command, NumberCache* cache) {
+  char* line_start = p;
+  *p++ = '(';
+  p = std::to_chars(p, p + kNumberRoom, command.depth).ptr;
+  *p++ = ')';
+  p = put_text(p, command.name);
   // Long names are written whole, followed by a blank, rather than cut as SolidCAM does: the
   // reader accepts both, and whole names are easier to grep.
-  const std::size_t head = out.used() - line_start;
-  out.blanks(head >= kArrowColumn ? 1 : kArrowColumn - head);
-  out.text("==>");
+  const auto head = static_cast<std::size_t>(p - line_start);
+  p = put_blanks(p, head >= kArrowColumn ? 1 : kArrowColumn - head);
+  p = put_text(p, "==>");
 
   std::size_t trace_from = 0;
   bool header_line_taken = false;
   if (!command.trace.empty() && command.trace.front().kind == TraceLine::Kind::Partial) {
     // Unfinished output shares the header line; the parameters then go on continuation lines.
-    out.blanks(1);
-    out.text(command.trace.front().text);
+    *p++ = ' ';
+    p = put_text(p, command.trace.front().text);
     trace_from = 1;
     header_line_taken = true;
   }
-  std::size_t pairs_on_line = 0;
-  for (const auto& p : command.parameters) {
-    if (header_line_taken || (pairs_on_line > 0 && out.used() - line_start > kLineWidth)) {
-      out.room(kArrowColumn + 4);
-      out.put('\n');
-      line_start = out.used();
-      out.blanks(kArrowColumn);
-      out.text("..>");
-      pairs_on_line = 0;
+  bool pairs_on_line = false;
+  for (const auto& param : command.parameters) {
+    if (header_line_taken || (pairs_on_line && static_cast<std::size_t>(p - line_start) > kLineWidth)) {
+      *p++ = '\n';
+      line_start = p;
+      p = put_text(put_blanks(p, kArrowColumn), "..>");
       header_line_taken = false;
     }
-    out.room(p.name.size() + 2 + kNumberRoom);  // numbers, the most common values, need no other check
-    out.put(' ');
-    out.text(p.name);
-    out.put(':');
-    put_value(out, p.value, cache);
-    ++pairs_on_line;
+    *p++ = ' ';
+    p = put_text(p, param.name);
+    *p++ = ':';
+    p = put_value(p, param.value, cache);
+    pairs_on_line = true;
   }
-  out.room(1);
-  out.put('\n');
+  *p++ = '\n';
   for (std::size_t i = trace_from; i < command.trace.size(); ++i) {
     const TraceLine& t = command.trace[i];
     switch (t.kind) {
       case TraceLine::Kind::Output:
       case TraceLine::Kind::Partial:  // only meaningful first; kept as an output line otherwise
-        out.blanks(kArrowColumn + 2);
-        out.text("> ");
+        p = put_text(put_blanks(p, kArrowColumn + 2), "> ");
         break;
-      case TraceLine::Kind::Note:
-        out.blanks(kArrowColumn);
-        out.text("..> ");
-        break;
+      case TraceLine::Kind::Note: p = put_text(put_blanks(p, kArrowColumn), "..> "); break;
       case TraceLine::Kind::Directive: break;
     }
-    out.text(t.text);
-    out.room(1);
-    out.put('\n');
+    p = put_text(p, t.text);
+    *p++ = '\n';
   }
+  return p;
+}
+
+// Appends through put: `out` grows by `room` bytes, of which the written ones are kept.
+template <class Put>
+void append_with(std::string& out, std::size_t room, Put put) {
+  const std::size_t used = out.size();
+  out.resize(used + room);
+  out.resize(static_cast<std::size_t>(put(out.data() + used) - out.data()));
 }
 
 }  // namespace
 
 void append_value(std::string& out, const Value& value) {
-  Cursor c(out, out.size());
-  put_value(c, value, nullptr);
-  out.resize(c.used());
+  append_with(out, value_room(value), [&](char* p) { return put_value(p, value, nullptr); });
 }
 
 void append_command(std::string& out, const Command& command) {
-  Cursor c(out, out.size());
-  put_command(c, command, nullptr);
-  out.resize(c.used());
+  append_with(out, command_room(command), [&](char* p) { return put_command(p, command, nullptr); });
 }
 
 void TraceWriter::write(const Command& command) {
-  Cursor c(buffer_, used_);
-  put_command(c, command, &numbers_);
-  used_ = c.used();
+  const std::size_t room = command_room(command);
+  if (buffer_.size() < used_ + room) buffer_.resize(std::max(buffer_.size() * 2, used_ + room + (1u << 17)));
+  used_ = static_cast<std::size_t>(put_command(buffer_.data() + used_, command, &numbers_) - buffer_.data());
   if (used_ > (1u << 17)) flush();
 }
 

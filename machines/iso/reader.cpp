@@ -389,7 +389,10 @@ struct IsoReader::Impl {
       if (!rules.o_words) throw BlockError{col, fmt::format("{} has no o-word control (`o{} {}`)", rules.title, number, word)};
       return o_word(fmt::format("o{}", number), word, c, col);
     }
-    if (rules.macro_b) {
+    // WHILE and END are words of three letters or more; a block that opens with a letter and a
+    // number (nearly every block) is not read as a keyword.
+    if (rules.macro_b && c.peek() != '\0' && c.i + 1 < c.text.size() && ncmodel::is_letter(c.text[c.i]) &&
+        ncmodel::is_letter(c.text[c.i + 1])) {
       const std::size_t save = c.i;
       const std::string word = c.keyword();
       if (word == "while") return macro_while(c);

@@ -10,20 +10,6 @@
 
 namespace ncmodel {
 
-void Cursor::skip() {
-  while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
-}
-
-bool Cursor::at_end() {
-  skip();
-  return i >= text.size();
-}
-
-char Cursor::peek() {
-  skip();
-  return i < text.size() ? text[i] : '\0';
-}
-
 bool Cursor::eat(char c) {
   if (peek() != c) return false;
   ++i;
@@ -62,40 +48,41 @@ std::string Cursor::keyword() {
 double Cursor::number() {
   skip();
   const std::size_t b = i;
-  if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+  const char* const p = text.data();
+  const std::size_t n = text.size();
+  const bool negative = i < n && p[i] == '-';
+  if (i < n && (p[i] == '+' || p[i] == '-')) ++i;
+  // One pass over the digits and points: the significant digits as an integer (leading zeros of
+  // the integer part left out; an overflow wraps, and then more than 15 of them send the text to
+  // from_chars below), how many there are and how many follow the point.
+  std::uint64_t mantissa = 0;
+  int count = 0, decimals = -1, points = 0;
   bool digits = false;
-  while (i < text.size() && (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.')) {
-    digits |= text[i] != '.';
-    ++i;
+  for (; i < n; ++i) {
+    const char c = p[i];
+    if (c == '.') {
+      ++points;
+      decimals = 0;
+      continue;
+    }
+    const auto d = static_cast<unsigned>(static_cast<unsigned char>(c)) - unsigned{'0'};
+    if (d > 9) break;
+    digits = true;
+    if (count == 0 && d == 0 && decimals < 0) continue;  // leading zeros of the integer part
+    mantissa = mantissa * 10 + d;
+    ++count;
+    if (decimals >= 0) ++decimals;
   }
   if (!digits) throw BlockError{b + 1, "expected a number"};
-  const char* first = text.data() + b;
-  const char* last = text.data() + i;
   // The usual case, up to 15 significant digits and one point: the digits as an integer, divided by
   // a power of ten. Both are exact doubles, so the quotient is correctly rounded: from_chars' value.
-  {
+  if (points <= 1 && count <= 15 && decimals <= 15) {
     static constexpr double kTens[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
-    const char* p = first;
-    const bool negative = *p == '-';
-    if (*p == '-' || *p == '+') ++p;
-    std::uint64_t mantissa = 0;
-    int count = 0, decimals = -1, points = 0;
-    for (; p < last; ++p) {
-      if (*p == '.') {
-        ++points;
-        decimals = 0;
-        continue;
-      }
-      if (count == 0 && *p == '0' && decimals < 0) continue;  // leading zeros of the integer part
-      mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
-      ++count;
-      if (decimals >= 0) ++decimals;
-    }
-    if (points <= 1 && count <= 15 && decimals <= 15) {
-      const double v = static_cast<double>(mantissa) / kTens[decimals < 0 ? 0 : decimals];
-      return negative ? -v : v;
-    }
+    const double v = static_cast<double>(mantissa) / kTens[decimals < 0 ? 0 : decimals];
+    return negative ? -v : v;
   }
+  const char* first = p + b;
+  const char* last = p + i;
   if (*first == '+') ++first;  // from_chars takes no '+'
   double v = 0;
   const auto [end, error] = std::from_chars(first, last, v);

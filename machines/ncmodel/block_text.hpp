@@ -16,16 +16,26 @@ struct BlockError {
 
 // Sinumerik names and LinuxCNC-style words: a letter or _, then letters, digits and _. ASCII
 // letters, as std::isalpha in the "C" locale the program runs in, without a library call per byte.
-inline bool ident_start(char c) { return ((c | 0x20) >= 'a' && (c | 0x20) <= 'z') || c == '_'; }
+inline bool is_letter(char c) { return (c | 0x20) >= 'a' && (c | 0x20) <= 'z'; }
+inline bool ident_start(char c) { return is_letter(c) || c == '_'; }
 inline bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9'); }
 
 struct Cursor {
   std::string_view text;
   std::size_t i = 0;
 
-  void skip();  // blanks and tabs
-  bool at_end();
-  char peek();  // after blanks; '\0' at the end
+  // Inline: the readers look at every word through these.
+  void skip() {  // blanks and tabs
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+  }
+  bool at_end() {
+    skip();
+    return i >= text.size();
+  }
+  char peek() {  // after blanks; '\0' at the end
+    skip();
+    return i < text.size() ? text[i] : '\0';
+  }
   std::size_t column() const { return i + 1; }
   bool eat(char c);
   bool eat(std::string_view s);

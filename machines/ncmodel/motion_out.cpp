@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "toolpath/short_text.hpp"
 #include "toolpath/value.hpp"
 
 namespace ncmodel {
@@ -23,85 +24,113 @@ double clean(double v) {
 
 }  // namespace
 
-void MotionOut::number(Command& c, toolpath::ParamKey key, double v) { c.set(key, Value::make_numeric(clean(v))); }
-
-Command& MotionOut::add(std::string_view name) {
-  if (spare_.empty()) {
-    queue_.emplace_back();
-  } else {
-    queue_.push_back(std::move(spare_.back()));
-    spare_.pop_back();
-    queue_.back().clear();
-  }
-  Command& c = queue_.back();
-  c.name.assign(name);
-  c.index = made_++;  // numbered in stream order, from 0
-  return c;
+void MotionOut::finish_command() {
+  if (current_) current_->parameters.resize(fill_);
+  current_ = nullptr;
 }
 
+void MotionOut::add(std::string_view name) {
+  finish_command();
+  if (tail_ == queue_.size()) queue_.emplace_back();
+  Command& c = queue_[tail_++];
+  shelf_.rename(c, name);
+  c.index = made_++;  // numbered in stream order, from 0
+  c.depth = 1;
+  c.line = 0;
+  c.trace.clear();
+  current_ = &c;
+  fill_ = 0;
+}
+
+// As Command::set on a cleared command: the parameters of a command are all different, so
+// filling slots in order gives the same parameters in the same order.
+Value& MotionOut::slot(K key, toolpath::ValueKind kind) {
+  auto& params = current_->parameters;
+  toolpath::Parameter& p = fill_ < params.size() ? params[fill_] : params.emplace_back();
+  ++fill_;
+  if (p.key != key || !toolpath::same_short_text(p.name, toolpath::param_name(key))) {  // in the catalogue spelling
+    p.name.assign(toolpath::param_name(key));
+    p.key = key;
+  }
+  p.line = p.column = 0;
+  p.value.kind = kind;
+  p.value.flag = toolpath::ChangeFlag::None;
+  return p.value;
+}
+
+void MotionOut::number(K key, double v) { slot(key, toolpath::ValueKind::Numeric).numeric = clean(v); }
+void MotionOut::word(K key, std::string_view w) { slot(key, toolpath::ValueKind::Enum).text.assign(w); }
+
 bool MotionOut::take(Command& out) {
-  if (queue_.empty()) return false;
-  std::swap(out, queue_.front());
-  if (spare_.size() < 64) spare_.push_back(std::move(queue_.front()));
-  queue_.pop_front();
+  finish_command();
+  if (head_ == tail_) return false;
+  swap(out, queue_[head_]);
+  if (++head_ == tail_) head_ = tail_ = 0;
   return true;
 }
 
-void MotionOut::position_words(Command& c, const Eigen::Vector3d& p) {
-  number(c, K::xpos, p.x());
-  number(c, K::ypos, p.y());
-  number(c, K::zpos, p.z());
+void MotionOut::position_words(const Eigen::Vector3d& p) {
+  number(K::xpos, p.x());
+  number(K::ypos, p.y());
+  number(K::zpos, p.z());
   static constexpr std::array<K, 3> kRotary = {K::apos, K::bpos, K::cpos};
   for (std::size_t i = 0; i < 3; ++i)
-    if (rotary_[i]) number(c, kRotary[i], *rotary_[i]);
+    if (rotary_[i]) number(kRotary[i], *rotary_[i]);
 }
 
 void MotionOut::rapid(const Eigen::Vector3d& to) {
-  position_words(add("@rapid_move"), to);
+  add("@rapid_move");
+  position_words(to);
   position_ = to;
 }
 
 void MotionOut::line(const Eigen::Vector3d& to, double feed) {
-  Command& c = add("@line");
-  position_words(c, to);
-  number(c, K::feed, feed);
+  add("@line");
+  position_words(to);
+  number(K::feed, feed);
   position_ = to;
 }
 
 void MotionOut::arc(const Eigen::Vector3d& to, const Eigen::Vector3d& centre, geo::Plane plane, bool ccw, double feed) {
   const geo::Arc a = geo::make_arc(position_, to, centre, plane, ccw ? geo::Direction::CCW : geo::Direction::CW, 360.0);
-  Command& c = add("@arc");
-  position_words(c, to);
-  number(c, K::feed, feed);
+  add("@arc");
+  position_words(to);
+  number(K::feed, feed);
   Eigen::Vector3d centre3 = centre;
   centre3[geo::axes(plane).normal] = position_[geo::axes(plane).normal];
-  number(c, K::xcenter, centre3.x());
-  number(c, K::ycenter, centre3.y());
-  number(c, K::zcenter, centre3.z());
-  number(c, K::radius, a.radius);
-  number(c, K::arc_size, a.sweep);
-  c.set(K::arc_direction, Value::make_enum(ccw ? "CCW" : "CW"));
-  c.set(K::arc_plane, Value::make_enum(std::string(geo::plane_name(plane))));
+  number(K::xcenter, centre3.x());
+  number(K::ycenter, centre3.y());
+  number(K::zcenter, centre3.z());
+  number(K::radius, a.radius);
+  number(K::arc_size, a.sweep);
+  word(K::arc_direction, ccw ? "CCW" : "CW");
+  word(K::arc_plane, geo::plane_name(plane));
   position_ = to;
 }
 
-void MotionOut::dwell(double seconds) { number(add("@delay"), K::delay_period, seconds); }
+void MotionOut::dwell(double seconds) {
+  add("@delay");
+  number(K::delay_period, seconds);
+}
 
 void MotionOut::spindle(int m, double speed) {
   speed_ = speed;
   if (m == 5) {
     if (spindle_ != 5) add("@stop_tool");
   } else {
-    Command& c = add("@start_tool");
-    number(c, K::spin, speed);
-    c.set(K::spin_direction, Value::make_enum(m == 4 ? "CCW" : "CW"));
+    add("@start_tool");
+    number(K::spin, speed);
+    word(K::spin_direction, m == 4 ? "CCW" : "CW");
   }
   spindle_ = m;
 }
 
 void MotionOut::speed(double speed) {
   speed_ = speed;
-  if (spindle_ != 5) number(add("@m_feed_spin"), K::spin, speed);
+  if (spindle_ != 5) {
+    add("@m_feed_spin");
+    number(K::spin, speed);
+  }
 }
 
 void MotionOut::tool_change(std::optional<double> number_, const std::optional<std::string>& name) {
@@ -109,31 +138,38 @@ void MotionOut::tool_change(std::optional<double> number_, const std::optional<s
     add("@stop_tool");
     spindle_ = 5;
   }
-  Command& c = add("@change_tool");
-  c.set(K::tool_number, Value::make_integer(number_ ? static_cast<std::int64_t>(*number_) : 0));
-  if (name) c.set(K::tool_name, Value::make_string(*name));
+  add("@change_tool");
+  slot(K::tool_number, toolpath::ValueKind::Integer).integer = number_ ? static_cast<std::int64_t>(*number_) : 0;
+  if (name) slot(K::tool_name, toolpath::ValueKind::String).text.assign(*name);
 }
 
-void MotionOut::message(std::string text) { add("@message").set(K::message, Value::make_string(std::move(text))); }
+void MotionOut::message(std::string text) {
+  add("@message");
+  slot(K::message, toolpath::ValueKind::String).text.assign(text);
+}
 
 void MotionOut::compensation(std::string_view side) {
-  add("@compensation").set(K::side, Value::make_enum(std::string(side)));
+  add("@compensation");
+  word(K::side, side);
 }
 
 void MotionOut::machine_move(const std::array<std::optional<double>, 3>& axes,
                              const std::array<std::optional<double>, 3>& rotary) {
-  Command& c = add("@machine_move");
+  add("@machine_move");
   static constexpr std::array<K, 3> kNames = {K::xpos, K::ypos, K::zpos}, kRotary = {K::apos, K::bpos, K::cpos};
   for (std::size_t i = 0; i < 3; ++i)
-    if (axes[i]) number(c, kNames[i], *axes[i]);
+    if (axes[i]) number(kNames[i], *axes[i]);
   for (std::size_t i = 0; i < 3; ++i)
     if (rotary[i]) {
       rotary_[i] = *rotary[i];
-      number(c, kRotary[i], *rotary[i]);
+      number(kRotary[i], *rotary[i]);
     }
 }
 
-void MotionOut::end_program() { position_words(add("@end_program"), position_); }
+void MotionOut::end_program() {
+  add("@end_program");
+  position_words(position_);
+}
 
 void MotionOut::hole(const Hole& h) {
   auto to_z = [&](bool fast, double z, double feed) {

@@ -6,7 +6,7 @@
 #pragma once
 
 #include <array>
-#include <deque>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -17,12 +17,13 @@
 #include "toolpath/command.hpp"
 #include "toolpath/geometry.hpp"
 #include "toolpath/param_key.hpp"
+#include "toolpath/parameter_shelf.hpp"
 
 namespace ncmodel {
 
 class MotionOut {
 public:
-  bool empty() const { return queue_.empty(); }
+  bool empty() const { return head_ == tail_; }
   // Moves the oldest command made into `out`; `out`'s old buffers are kept for a later command, so
   // a long program allocates nothing per command. False when none waits.
   bool take(toolpath::Command& out);
@@ -71,12 +72,24 @@ public:
   void hole(const Hole& h);
 
 private:
-  static void number(toolpath::Command& c, toolpath::ParamKey key, double v);
-  toolpath::Command& add(std::string_view name);
-  void position_words(toolpath::Command& c, const Eigen::Vector3d& p);
+  // Starts a command at the end of the queue; number() and word() add its parameters in order,
+  // into the slots a recycled command already has (mostly named so: no clearing, no lookup).
+  void add(std::string_view name);
+  toolpath::Value& slot(toolpath::ParamKey key, toolpath::ValueKind kind);
+  void number(toolpath::ParamKey key, double v);
+  void word(toolpath::ParamKey key, std::string_view w);
+  void finish_command();  // cuts the command being filled to the parameters it was given
+  void position_words(const Eigen::Vector3d& p);
 
-  std::deque<toolpath::Command> queue_;
-  std::vector<toolpath::Command> spare_;  // taken commands' buffers, for the next ones
+  // Commands from head_ to tail_ wait; the vector is reused from the start once they are taken,
+  // so its commands keep their buffers (what take() swapped in from the consumer).
+  std::vector<toolpath::Command> queue_;
+  std::size_t head_ = 0, tail_ = 0;
+  toolpath::Command* current_ = nullptr;
+  std::size_t fill_ = 0;
+  // A recycled command mostly held another shape (an @arc comes back for a @line): the shelf
+  // keeps the parameter vectors by command name, so that their slots are named already.
+  toolpath::ParameterShelf shelf_;
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
   int spindle_ = 5;
   double speed_ = 0;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "toolpath/number_text.hpp"
 #include "toolpath/trace_reader.hpp"
 #include "toolpath/trace_writer.hpp"
 
@@ -131,6 +132,101 @@ TEST(TraceWriter, NumberCacheWritesWhatTheDigitsWould) {
       writer.write(c);
     }
   }
+  EXPECT_EQ(written.str(), expected);
+}
+
+}  // namespace
+
+namespace {
+
+// The layout written the plain way, a std::string per line: what the writer's single-capacity
+// pointer code must give for any command (names and texts of any length, every kind of value and
+// trace line, wrapping).
+std::string value_text(const Value& v) {
+  const char* flag = v.flag == ChangeFlag::Changed ? "T" : v.flag == ChangeFlag::Unchanged ? "F" : "";
+  switch (v.kind) {
+    case toolpath::ValueKind::Integer: return std::to_string(v.integer) + flag;
+    case toolpath::ValueKind::Numeric: return toolpath::number_text_exact(v.numeric) + flag;
+    case toolpath::ValueKind::Logical: return v.logical ? "true" : "false";
+    case toolpath::ValueKind::Enum: return v.text;
+    case toolpath::ValueKind::String: {
+      const char q = v.text.find('\'') == std::string::npos ? '\'' : '"';
+      std::string quoted(1, q);
+      quoted += v.text;
+      quoted += q;
+      return quoted;
+    }
+  }
+  return {};
+}
+
+std::string reference_layout(const Command& c) {
+  std::string out, line = "(";  // appended piece by piece: GCC 12 warns on "(" + std::string (-Wrestrict)
+  line += std::to_string(c.depth);
+  line += ")";
+  line += c.name;
+  line += std::string(line.size() >= 20 ? 1 : 20 - line.size(), ' ') + "==>";
+  std::size_t from = 0;
+  bool header_taken = false, pairs = false;
+  if (!c.trace.empty() && c.trace.front().kind == TraceLine::Kind::Partial) {
+    line += " " + c.trace.front().text;
+    from = 1;
+    header_taken = true;
+  }
+  for (const auto& p : c.parameters) {
+    if (header_taken || (pairs && line.size() > 100)) {
+      out += line + "\n";
+      line = std::string(20, ' ') + "..>";
+      header_taken = false;
+    }
+    line += " " + p.name + ":" + value_text(p.value);
+    pairs = true;
+  }
+  out += line + "\n";
+  for (std::size_t i = from; i < c.trace.size(); ++i) {
+    const TraceLine& t = c.trace[i];
+    if (t.kind == TraceLine::Kind::Output || t.kind == TraceLine::Kind::Partial) out += std::string(22, ' ') + "> ";
+    if (t.kind == TraceLine::Kind::Note) out += std::string(20, ' ') + "..> ";
+    out += t.text + "\n";
+  }
+  return out;
+}
+
+TEST(TraceWriter, RandomCommandsAsThePlainLayout) {
+  std::mt19937_64 rng(25);
+  auto text = [&](std::size_t max) {
+    std::string s(rng() % (max + 1), 'a');
+    for (char& ch : s) ch = static_cast<char>('a' + rng() % 26);
+    return s;
+  };
+  std::string expected, appended;
+  std::ostringstream written;
+  {
+    toolpath::TraceWriter writer(written);
+    for (int i = 0; i < 5000; ++i) {
+      Command c;
+      c.name = "@" + text(30);
+      c.depth = static_cast<int>(rng() % 12);
+      const std::size_t params = rng() % 25;
+      for (std::size_t k = 0; k < params; ++k) {
+        Value v;
+        switch (rng() % 5) {
+          case 0: v = Value::make_integer(static_cast<std::int64_t>(rng()), ChangeFlag(rng() % 3)); break;
+          case 1: v = Value::make_numeric(std::ldexp(static_cast<double>(rng() >> 11), static_cast<int>(rng() % 120) - 60), ChangeFlag(rng() % 3)); break;
+          case 2: v = Value::make_logical(rng() % 2); break;
+          case 3: v = Value::make_enum(text(40)); break;
+          default: v = Value::make_string(rng() % 4 ? text(200) : "it's"); break;
+        }
+        c.parameters.emplace_back(text(40), v);
+      }
+      const std::size_t notes = rng() % 4;
+      for (std::size_t k = 0; k < notes; ++k) c.trace.push_back({TraceLine::Kind(rng() % 4), text(150)});
+      expected += reference_layout(c);
+      toolpath::append_command(appended, c);
+      writer.write(c);
+    }
+  }
+  EXPECT_EQ(appended, expected);
   EXPECT_EQ(written.str(), expected);
 }
 

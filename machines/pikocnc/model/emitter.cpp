@@ -101,21 +101,8 @@ void Emitter::mute(bool on) {
   muted_ = on;
 }
 
-toolpath::Value& Emitter::slot(std::string_view name, toolpath::ValueKind kind) {
-  auto& params = current_->parameters;
-  if (fill_ == params.size()) params.emplace_back();
-  toolpath::Parameter& p = params[fill_++];
-  if (!toolpath::same_short_text(p.name, name)) p.rename(name);  // a recycled command usually has the same names
-  p.value.kind = kind;
-  p.value.flag = toolpath::ChangeFlag::None;
-  return p.value;
-}
-
-void Emitter::number(std::string_view name, double v) { slot(name, toolpath::ValueKind::Numeric).numeric = clean(v); }
-void Emitter::integer(std::string_view name, long long v) { slot(name, toolpath::ValueKind::Integer).integer = v; }
-void Emitter::logical(std::string_view name, bool v) { slot(name, toolpath::ValueKind::Logical).logical = v; }
-void Emitter::text(std::string_view name, std::string_view v) { slot(name, toolpath::ValueKind::String).text.assign(v); }
-void Emitter::word(std::string_view name, std::string_view v) { slot(name, toolpath::ValueKind::Enum).text.assign(v); }
+toolpath::Parameter& Emitter::new_slot() { return current_->parameters.emplace_back(); }
+void Emitter::rename(toolpath::Parameter& p, std::string_view name) { p.rename(name); }
 
 void Emitter::positions(const Eigen::Vector3d& p, double a, double b) {
   number("xpos", p.x());

@@ -7,9 +7,11 @@
 #include <string_view>
 #include <vector>
 
+#include "machines/pikocnc/model/geometry.hpp"
 #include "machines/pikocnc/model/motion.hpp"
 #include "toolpath/command.hpp"
 #include "toolpath/parameter_shelf.hpp"
+#include "toolpath/short_text.hpp"
 
 namespace pikocnc {
 
@@ -22,11 +24,13 @@ public:
   void add(std::string_view name);
   void move(const Move& m, const Frame& frame);
 
-  void number(std::string_view name, double v);
-  void integer(std::string_view name, long long v);
-  void logical(std::string_view name, bool v);
-  void text(std::string_view name, std::string_view v);
-  void word(std::string_view name, std::string_view v);
+  // Inline: every parameter of every command comes here, mostly with a literal name, so that the
+  // comparison with the name the recycled slot already has folds to a few word compares.
+  [[gnu::always_inline]] void number(std::string_view name, double v) { slot(name, toolpath::ValueKind::Numeric).numeric = clean(v); }
+  [[gnu::always_inline]] void integer(std::string_view name, long long v) { slot(name, toolpath::ValueKind::Integer).integer = v; }
+  [[gnu::always_inline]] void logical(std::string_view name, bool v) { slot(name, toolpath::ValueKind::Logical).logical = v; }
+  [[gnu::always_inline]] void text(std::string_view name, std::string_view v) { slot(name, toolpath::ValueKind::String).text.assign(v); }
+  [[gnu::always_inline]] void word(std::string_view name, std::string_view v) { slot(name, toolpath::ValueKind::Enum).text.assign(v); }
 
   // True when no command can be handed over: the queue is empty or stops at an unfilled hole.
   bool empty() const { return head_ == (holes_.empty() ? tail_ : holes_.front().pos); }
@@ -76,7 +80,19 @@ public:
 
 private:
   void finish_command();
-  toolpath::Value& slot(std::string_view name, toolpath::ValueKind kind);
+  // The next parameter of the command being filled, named `name`: a recycled slot mostly has that
+  // name already. Forced inline into the helpers above; the rare steps are calls.
+  [[gnu::always_inline]] toolpath::Value& slot(std::string_view name, toolpath::ValueKind kind) {
+    auto& params = current_->parameters;
+    toolpath::Parameter& p = fill_ < params.size() ? params[fill_] : new_slot();
+    ++fill_;
+    if (!toolpath::same_short_text(p.name, name)) rename(p, name);
+    p.value.kind = kind;
+    p.value.flag = toolpath::ChangeFlag::None;
+    return p.value;
+  }
+  toolpath::Parameter& new_slot();
+  static void rename(toolpath::Parameter& p, std::string_view name);
   void positions(const Eigen::Vector3d& p, double a, double b);
   void straight(const Move& m, const Eigen::Vector3d& to, bool from_arc);
   void chords(const Move& m, const Frame& frame);

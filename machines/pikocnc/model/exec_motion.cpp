@@ -150,9 +150,7 @@ void Interpreter::motion(const Resolved& r, Words& w) {
     uncompensable_ = false;
     return;
   }
-  bool any = false;
-  for (char l : std::string_view("XYZABUVWIJKR")) any |= w.free(l);
-  if (!any) return;
+  if (!w.any_free(letters("XYZABUVWIJKR"))) return;
   switch (s_.motion) {
     case Op::G0: case Op::G1: case Op::G0_1: case Op::G1_1: {
       const bool incremental = s_.motion == Op::G0_1 || s_.motion == Op::G1_1;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <bit>
 #include <bitset>
 #include <string>
 #include <utility>
@@ -125,6 +126,8 @@ struct Interpreter::Words {
   bool owned(char l) const { return b.has(l) && (r.owner_words & letter_bit(l)); }
   // A word free for the modal motion: not taken by an owning code or by G4/G25/G41/G42/G50.
   bool free(char l) const { return b.has(l) && !((r.owner_words | r.partial_words) & letter_bit(l)); }
+  // Whether any of `mask`'s letters is free, at once.
+  bool any_free(std::uint32_t mask) const { return (b.present & mask & ~(r.owner_words | r.partial_words)) != 0; }
   double raw(char l) {
     used |= letter_bit(l);
     return b.get(l);
@@ -140,12 +143,11 @@ struct Interpreter::Words {
 
   template <class Warn>
   void report_unused(Warn&& warn) const {
-    const std::uint32_t left = b.present & ~used;
-    for (int i = 0; i < 26; ++i)
-      if (left & (1u << i)) {
-        const char l = static_cast<char>('A' + i);
-        warn(b.col(l), fmt::format("word {} not used by this line: ignored", l));
-      }
+    // Only the letters left, lowest first: most lines leave none.
+    for (std::uint32_t left = b.present & ~used; left != 0; left &= left - 1) {
+      const char l = static_cast<char>('A' + std::countr_zero(left));
+      warn(b.col(l), fmt::format("word {} not used by this line: ignored", l));
+    }
   }
 };
 

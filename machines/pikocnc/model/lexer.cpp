@@ -13,6 +13,10 @@ namespace {
 constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                              1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
+constexpr std::uint64_t kPow10Int[] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000,
+                                      1000000000, 10000000000, 100000000000, 1000000000000,
+                                      10000000000000, 100000000000000, 1000000000000000};
+
 // Character classes by table: the lexer looks at every byte of every line.
 enum : unsigned char { kOther = 0, kBlank = 1, kDigit = 2, kLetter = 3 };
 struct ClassTable {
@@ -169,7 +173,7 @@ std::size_t read_simple_number(std::string_view s, std::size_t i, Number& n) {
   n.mantissa = mantissa;
   n.digits = digits;
   n.frac_digits = frac_digits;
-  n.frac = mantissa - int_part * static_cast<std::uint64_t>(kPow10[frac_digits]);
+  n.frac = mantissa - int_part * kPow10Int[frac_digits];
   n.text = s.substr(begin, end - begin);
   return end;
 }

@@ -2,8 +2,10 @@
 // and malformed or huge numbers are errors with their column.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <random>
 #include <string>
 
 #include "machines/ncmodel/block_text.hpp"
@@ -47,6 +49,39 @@ TEST(BlockText, BadNumbersAreErrorsAtTheirColumn) {
       EXPECT_EQ(e.column, c.column);
       EXPECT_EQ(e.message, c.message);
     }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// Random numbers as the readers meet them (signs, points, leading and trailing zeros, long runs of
+// digits, a letter after): the one-pass reader stops where the number ends and gives strtod's value.
+TEST(BlockText, RandomNumbersAsStrtod) {
+  std::mt19937_64 rng(25);
+  const std::string alphabet = "00123456789.";
+  for (int n = 0; n < 200000; ++n) {
+    std::string text;
+    if (rng() % 3 == 0) text += "+-"[rng() % 2];
+    const std::size_t length = 1 + rng() % (rng() % 8 == 0 ? 25 : 9);
+    for (std::size_t k = 0; k < length; ++k) text += alphabet[rng() % alphabet.size()];
+    const std::size_t end = text.size();
+    if (rng() % 2) text += "X1";
+    SCOPED_TRACE(text);
+    const std::string span = text.substr(0, end);
+    const auto points = std::count(span.begin(), span.end(), '.');
+    const bool any_digit = span.find_first_of("0123456789") != std::string::npos;
+    ncmodel::Cursor c{text, 0};
+    if (!any_digit || points > 1) {
+      EXPECT_THROW(c.number(), ncmodel::BlockError);
+      continue;
+    }
+    const double got = c.number();
+    const double expected = std::strtod(span.c_str(), nullptr);
+    EXPECT_EQ(c.i, end);
+    EXPECT_EQ(got, expected);
+    EXPECT_EQ(std::signbit(got), std::signbit(expected));
   }
 }
 
