@@ -105,7 +105,7 @@ void assign(std::string& s, std::string_view text) {
 
 }  // namespace
 
-CommandSpool::CommandSpool() : file_(std::tmpfile()), out_(kBlock) {
+CommandSpool::CommandSpool() : file_(std::tmpfile()), out_(new char[kBlock]), capacity_(kBlock) {
   if (!file_) throw std::runtime_error("cannot create a temporary file to hold jobs being reordered");
   std::setvbuf(file_.get(), nullptr, _IONBF, 0);  // whole blocks only: our own buffers are the cache
 }
@@ -113,7 +113,7 @@ CommandSpool::CommandSpool() : file_(std::tmpfile()), out_(kBlock) {
 void CommandSpool::flush() {
   if (used_ == 0) return;
   if (std::fseek(file_.get(), static_cast<long>(flushed_), SEEK_SET) != 0 ||
-      std::fwrite(out_.data(), 1, used_, file_.get()) != used_)
+      std::fwrite(out_.get(), 1, used_, file_.get()) != used_)
     throw std::runtime_error("cannot write the temporary file of jobs being reordered (disk full?)");
   flushed_ += static_cast<std::int64_t>(used_);
   used_ = 0;
@@ -121,14 +121,17 @@ void CommandSpool::flush() {
 
 std::int64_t CommandSpool::write(const toolpath::Command& c, CommandKind kind) {
   const std::size_t most = bound(c);
-  if (used_ + most > out_.size()) {
+  if (used_ + most > capacity_) {
     flush();
-    if (most > out_.size()) out_.resize(most);  // a command larger than a block
+    if (most > capacity_) {  // a command larger than a block
+      out_.reset(new char[most]);
+      capacity_ = most;
+    }
   }
   const std::int64_t at = end();
   const std::size_t start = used_;
   const std::string_view* names = catalogue();
-  Writer w(out_.data() + start + 4);
+  Writer w(out_.get() + start + 4);
   w.put(static_cast<std::uint8_t>(kind));
   w.text(c.name);
   w.put(static_cast<std::uint64_t>(c.index));
@@ -157,9 +160,9 @@ std::int64_t CommandSpool::write(const toolpath::Command& c, CommandKind kind) {
     w.put(static_cast<std::uint8_t>(t.kind));
     w.text(t.text);
   }
-  const std::size_t used = static_cast<std::size_t>(w.at() - out_.data());
+  const std::size_t used = static_cast<std::size_t>(w.at() - out_.get());
   const auto payload = static_cast<std::uint32_t>(used - start - 4);
-  std::memcpy(out_.data() + start, &payload, 4);
+  std::memcpy(out_.get() + start, &payload, 4);
   used_ = used;
   return at;
 }
@@ -177,9 +180,9 @@ const char* CommandSpool::record_at(std::int64_t offset, std::uint32_t& size) {
   if (offset >= flushed_) {
     const auto at = static_cast<std::size_t>(offset - flushed_);
     if (at + 4 > used_) damaged();
-    std::memcpy(&size, out_.data() + at, 4);
+    std::memcpy(&size, out_.get() + at, 4);
     if (at + 4 + size > used_) damaged();
-    return out_.data() + at + 4;
+    return out_.get() + at + 4;
   }
   auto inside = [&](std::int64_t from, std::int64_t n) {
     return from >= in_start_ && from + n <= in_start_ + static_cast<std::int64_t>(in_.size());

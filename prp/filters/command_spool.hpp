@@ -49,8 +49,10 @@ private:
   };
   std::unique_ptr<std::FILE, Close> file_;
   std::int64_t flushed_ = 0;     // bytes in the file; the records after them are in out_
-  std::vector<char> out_;        // records not yet in the file: the first used_ bytes (no zero
-  std::size_t used_ = 0;         // filling per record, as std::string::resize would do)
+  // Records not yet in the file: the first used_ of capacity_ bytes (never zero-filled, unlike a
+  // std::string or std::vector resized per record or per block).
+  std::unique_ptr<char[]> out_;
+  std::size_t capacity_ = 0, used_ = 0;
   std::string in_;               // a window of the file: bytes [in_start_, in_start_ + in_.size())
   std::int64_t in_start_ = 0;
   std::int64_t position_ = 0;    // where the next read starts
