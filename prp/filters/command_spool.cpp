@@ -1,19 +1,43 @@
 #include "prp/filters/command_spool.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <stdexcept>
 #include <string_view>
 
+#include "toolpath/short_text.hpp"
+
 namespace prp {
 namespace {
 
-// Record layout: a u32 payload length, then the payload: name, index, depth, line, the parameters
-// (name, kind and flag in one byte, then only the field of that kind, then line and column), the
-// trace lines. Texts are a u32
-// length and the bytes. A parameter name is a u16: its ParamKey when the name is spelled exactly as
-// the catalogue spells it (no hashing when it is read back), else 0 and the name as text.
+using toolpath::ParamKey;
+using toolpath::ValueKind;
+
+// Record layout: a u32 payload length, then the payload: the command's kind (u8), name, index,
+// depth, line, the parameters, the trace lines. A parameter is a u16 name code, its kind and flag
+// in one byte, its line and column, only the field of its kind, then its name as text when the code
+// is 0. The code is the ParamKey when the name is spelled exactly as the catalogue spells it (no
+// hashing when it is read back), else 0. Texts are a u32 length and the bytes; numbers are raw.
 constexpr std::size_t kBlock = std::size_t{1} << 20;
+constexpr std::size_t kParameterFixed = 2 + 1 + 4 + 4;  // code, kind and flag, line, column
+constexpr unsigned kKinds = 1
+#define PRP_KIND_COUNT(kind, name) +1
+    PRP_COMMAND_KINDS(PRP_KIND_COUNT)
+#undef PRP_KIND_COUNT
+    ;
+
+// The catalogue spellings by key, without a call per parameter.
+const std::string_view* catalogue() {
+  static const auto names = [] {
+    std::array<std::string_view, toolpath::param_key_count + 1> t{};
+    for (std::size_t k = 1; k < t.size(); ++k) t[k] = toolpath::param_name(static_cast<ParamKey>(k));
+    return t;
+  }();
+  return names.data();
+}
+
+[[noreturn]] void damaged() { throw std::runtime_error("the temporary file of jobs is damaged"); }
 
 // Writes into a buffer already large enough (see bound()).
 class Writer {
@@ -37,95 +61,109 @@ private:
 
 // The largest record a command can make.
 std::size_t bound(const toolpath::Command& c) {
-  std::size_t n = 4 + 4 + c.name.size() + 8 + 4 + 4 + 4 + 4;
-  for (const auto& p : c.parameters) n += 2 + 4 + p.name.size() + 1 + 8 + p.value.text.size() + 4 + 8;
+  std::size_t n = 4 + 1 + 4 + c.name.size() + 8 + 4 + 4 + 4 + 4;
+  for (const auto& p : c.parameters) n += kParameterFixed + 8 + 4 + p.value.text.size() + 4 + p.name.size();
   for (const auto& t : c.trace) n += 1 + 4 + t.text.size();
   return n;
 }
 
-// Reads the payload of one record.
+// Reads the payload of one record: need() checks that the next bytes are there, once for the
+// fields that follow, and get() takes them.
 class Cursor {
 public:
-  explicit Cursor(std::string_view bytes) : bytes_(bytes) {}
+  Cursor(const char* at, std::size_t size) : at_(at), left_(size) {}
+  void need(std::size_t n) const {
+    if (n > left_) damaged();
+  }
   template <class T>
   T get() {
     T v;
-    std::memcpy(&v, take(sizeof v), sizeof v);
+    std::memcpy(&v, at_, sizeof v);
+    at_ += sizeof v;
+    left_ -= sizeof v;
     return v;
   }
-  void text(std::string& s) { s.assign(text()); }
   std::string_view text() {
+    need(4);
     const auto n = get<std::uint32_t>();
-    return {take(n), n};
+    need(n);
+    const std::string_view s(at_, n);
+    at_ += n;
+    left_ -= n;
+    return s;
   }
 
 private:
-  const char* take(std::size_t n) {
-    if (n > bytes_.size()) throw std::runtime_error("the temporary file of jobs is damaged");
-    const char* p = bytes_.data();
-    bytes_.remove_prefix(n);
-    return p;
-  }
-  std::string_view bytes_;
+  const char* at_;
+  std::size_t left_;
 };
+
+// `s` holds `text` afterwards; its buffer is kept when it already does (a reused command's names).
+void assign(std::string& s, std::string_view text) {
+  if (!toolpath::same_short_text(s, text)) s.assign(text);
+}
 
 }  // namespace
 
-CommandSpool::CommandSpool() : file_(std::tmpfile()) {
+CommandSpool::CommandSpool() : file_(std::tmpfile()), out_(new char[kBlock]), capacity_(kBlock) {
   if (!file_) throw std::runtime_error("cannot create a temporary file to hold jobs being reordered");
   std::setvbuf(file_.get(), nullptr, _IONBF, 0);  // whole blocks only: our own buffers are the cache
-  out_.reserve(kBlock);
 }
 
 void CommandSpool::flush() {
-  if (out_.empty()) return;
+  if (used_ == 0) return;
   if (std::fseek(file_.get(), static_cast<long>(flushed_), SEEK_SET) != 0 ||
-      std::fwrite(out_.data(), 1, out_.size(), file_.get()) != out_.size())
+      std::fwrite(out_.get(), 1, used_, file_.get()) != used_)
     throw std::runtime_error("cannot write the temporary file of jobs being reordered (disk full?)");
-  flushed_ += static_cast<std::int64_t>(out_.size());
-  out_.clear();
+  flushed_ += static_cast<std::int64_t>(used_);
+  used_ = 0;
 }
 
-std::int64_t CommandSpool::write(const toolpath::Command& c) {
+std::int64_t CommandSpool::write(const toolpath::Command& c, CommandKind kind) {
   const std::size_t most = bound(c);
-  if (out_.size() + most > kBlock) flush();
+  if (used_ + most > capacity_) {
+    flush();
+    if (most > capacity_) {  // a command larger than a block
+      out_.reset(new char[most]);
+      capacity_ = most;
+    }
+  }
   const std::int64_t at = end();
-  const std::size_t start = out_.size();
-  out_.resize(start + most);  // within the reserved block unless the command alone is larger
-  Writer w(out_.data() + start + 4);
+  const std::size_t start = used_;
+  const std::string_view* names = catalogue();
+  Writer w(out_.get() + start + 4);
+  w.put(static_cast<std::uint8_t>(kind));
   w.text(c.name);
   w.put(static_cast<std::uint64_t>(c.index));
   w.put(static_cast<std::int32_t>(c.depth));
   w.put(c.line);  // positions travel with the job, for errors found when it is posted
   w.put(static_cast<std::uint32_t>(c.parameters.size()));
   for (const auto& p : c.parameters) {
-    if (p.key != toolpath::ParamKey::none && p.name == toolpath::param_name(p.key)) {
-      w.put(static_cast<std::uint16_t>(p.key));
-    } else {
-      w.put(std::uint16_t{0});
-      w.text(p.name);
-    }
+    const bool catalogued =
+        p.key != ParamKey::none && toolpath::same_short_text(p.name, names[static_cast<std::size_t>(p.key)]);
+    w.put(static_cast<std::uint16_t>(catalogued ? static_cast<std::uint16_t>(p.key) : 0));
     const toolpath::Value& v = p.value;
     w.put(static_cast<std::uint8_t>(static_cast<unsigned>(v.kind) | static_cast<unsigned>(v.flag) << 4));
-    switch (v.kind) {
-      case toolpath::ValueKind::Integer: w.put(v.integer); break;
-      case toolpath::ValueKind::Numeric: w.put(v.numeric); break;
-      case toolpath::ValueKind::Logical: w.put(static_cast<std::uint8_t>(v.logical)); break;
-      case toolpath::ValueKind::String:
-      case toolpath::ValueKind::Enum: w.text(v.text); break;
-    }
     w.put(p.line);
     w.put(p.column);
+    switch (v.kind) {
+      case ValueKind::Integer: w.put(v.integer); break;
+      case ValueKind::Numeric: w.put(v.numeric); break;
+      case ValueKind::Logical: w.put(static_cast<std::uint8_t>(v.logical)); break;
+      case ValueKind::String:
+      case ValueKind::Enum: w.text(v.text); break;
+    }
+    if (!catalogued) w.text(p.name);
   }
   w.put(static_cast<std::uint32_t>(c.trace.size()));
   for (const auto& t : c.trace) {
     w.put(static_cast<std::uint8_t>(t.kind));
     w.text(t.text);
   }
-  const std::size_t used = static_cast<std::size_t>(w.at() - out_.data());
+  const std::size_t used = static_cast<std::size_t>(w.at() - out_.get());
   const auto payload = static_cast<std::uint32_t>(used - start - 4);
-  std::memcpy(out_.data() + start, &payload, 4);
-  out_.resize(used);
+  std::memcpy(out_.get() + start, &payload, 4);
+  used_ = used;
   return at;
 }
 
@@ -134,12 +172,17 @@ void CommandSpool::seek(std::int64_t offset) { position_ = offset; }
 // From memory when not yet flushed, else from the window, refilled from the file when the record
 // is not wholly inside it.
 const char* CommandSpool::record_at(std::int64_t offset, std::uint32_t& size) {
+  const std::int64_t window = static_cast<std::int64_t>(in_.size());
+  if (const std::int64_t at = offset - in_start_; offset < flushed_ && at >= 0 && at + 4 <= window) {
+    std::memcpy(&size, in_.data() + at, 4);  // the usual case when replaying: inside the window
+    if (at + 4 + static_cast<std::int64_t>(size) <= window) return in_.data() + at + 4;
+  }
   if (offset >= flushed_) {
     const auto at = static_cast<std::size_t>(offset - flushed_);
-    if (at + 4 > out_.size()) throw std::runtime_error("the temporary file of jobs is damaged");
-    std::memcpy(&size, out_.data() + at, 4);
-    if (at + 4 + size > out_.size()) throw std::runtime_error("the temporary file of jobs is damaged");
-    return out_.data() + at + 4;
+    if (at + 4 > used_) damaged();
+    std::memcpy(&size, out_.get() + at, 4);
+    if (at + 4 + size > used_) damaged();
+    return out_.get() + at + 4;
   }
   auto inside = [&](std::int64_t from, std::int64_t n) {
     return from >= in_start_ && from + n <= in_start_ + static_cast<std::int64_t>(in_.size());
@@ -161,49 +204,95 @@ const char* CommandSpool::record_at(std::int64_t offset, std::uint32_t& size) {
   return in_.data() + (offset - in_start_) + 4;
 }
 
-bool CommandSpool::read(toolpath::Command& out) {
+// Gives `parameters` n slots: a spare list of that length when there is one, and the list it had
+// becomes a spare of its own length, else (no spare, or no room for another) by resizing it. While
+// spares run short, a new list is made: the spares fill up to kSpares per length and stay.
+void CommandSpool::shape(std::vector<toolpath::Parameter>& parameters, std::size_t n) {
+  const std::size_t had = parameters.size();
+  if (had == n) return;
+  if (n < spare_.size() && had < spare_.size() && spare_[had].size() < kSpares) {
+    auto& to = spare_[had];
+    auto& from = spare_[n];
+    if (to.capacity() == 0) to.reserve(kSpares);  // once per length
+    to.emplace_back().swap(parameters);
+    if (from.empty()) {
+      parameters.resize(n);
+    } else {
+      parameters.swap(from.back());
+      from.pop_back();  // an empty list: nothing to free
+    }
+    return;
+  }
+  parameters.resize(n);
+}
+
+bool CommandSpool::read(toolpath::Command& out, CommandKind& kind) {
   if (position_ >= end()) return false;
   std::uint32_t payload = 0;
   const char* record = record_at(position_, payload);
   position_ += 4 + static_cast<std::int64_t>(payload);
 
-  Cursor in(std::string_view(record, payload));
-  in.text(out.name);
+  Cursor in(record, payload);
+  in.need(1);
+  const auto kind_code = in.get<std::uint8_t>();
+  if (kind_code >= kKinds) damaged();
+  kind = static_cast<CommandKind>(kind_code);
+  assign(out.name, in.text());
+  in.need(8 + 4 + 4 + 4);
   out.index = static_cast<std::size_t>(in.get<std::uint64_t>());
   out.depth = in.get<std::int32_t>();
   out.line = in.get<std::uint32_t>();
-  out.parameters.resize(in.get<std::uint32_t>());
+  shape(out.parameters, in.get<std::uint32_t>());
+  const std::string_view* names = catalogue();
   for (auto& p : out.parameters) {
-    if (const auto code = in.get<std::uint16_t>(); code != 0) {
-      if (code > toolpath::param_key_count) throw std::runtime_error("the temporary file of jobs is damaged");
-      const auto key = static_cast<toolpath::ParamKey>(code);
-      p.name.assign(toolpath::param_name(key));  // the catalogue spelling, as written
-      p.key = key;                                // already known: no rename(), no hashing
-    } else {
-      p.rename(in.text());
-    }
-    toolpath::Value& v = p.value;
+    in.need(kParameterFixed);
+    const auto code = in.get<std::uint16_t>();
     const auto kind_and_flag = in.get<std::uint8_t>();
-    v.kind = static_cast<toolpath::ValueKind>(kind_and_flag & 0xf);
+    p.line = in.get<std::uint32_t>();
+    p.column = in.get<std::uint32_t>();
+    toolpath::Value& v = p.value;
+    v.kind = static_cast<ValueKind>(kind_and_flag & 0xf);
     v.flag = static_cast<toolpath::ChangeFlag>(kind_and_flag >> 4);
     v.integer = 0;
     v.numeric = 0.0;
     v.logical = false;
-    v.text.clear();
     switch (v.kind) {
-      case toolpath::ValueKind::Integer: v.integer = in.get<std::int64_t>(); break;
-      case toolpath::ValueKind::Numeric: v.numeric = in.get<double>(); break;
-      case toolpath::ValueKind::Logical: v.logical = in.get<std::uint8_t>() != 0; break;
-      case toolpath::ValueKind::String:
-      case toolpath::ValueKind::Enum: in.text(v.text); break;
+      case ValueKind::Integer:
+        in.need(8);
+        v.integer = in.get<std::int64_t>();
+        v.text.clear();
+        break;
+      case ValueKind::Numeric:
+        in.need(8);
+        v.numeric = in.get<double>();
+        v.text.clear();
+        break;
+      case ValueKind::Logical:
+        in.need(1);
+        v.logical = in.get<std::uint8_t>() != 0;
+        v.text.clear();
+        break;
+      case ValueKind::String:
+      case ValueKind::Enum: assign(v.text, in.text()); break;
+      default: damaged();
     }
-    p.line = in.get<std::uint32_t>();
-    p.column = in.get<std::uint32_t>();
+    if (code != 0) {
+      if (code > toolpath::param_key_count) damaged();
+      const auto key = static_cast<ParamKey>(code);
+      if (p.key != key || !toolpath::same_short_text(p.name, names[code])) {
+        p.name.assign(names[code]);  // the catalogue spelling, as written
+        p.key = key;                 // already known: no rename(), no hashing
+      }
+    } else if (const std::string_view name = in.text(); !toolpath::same_short_text(p.name, name)) {
+      p.rename(name);  // else the name is already there, and its key with it
+    }
   }
+  in.need(4);
   out.trace.resize(in.get<std::uint32_t>());
   for (auto& t : out.trace) {
+    in.need(1);
     t.kind = static_cast<toolpath::TraceLine::Kind>(in.get<std::uint8_t>());
-    in.text(t.text);
+    t.text.assign(in.text());
   }
   return true;
 }

@@ -1,9 +1,12 @@
 #include "prp/filters/precision_filter.hpp"
 
 #include <array>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <vector>
+
+#include "prp/filters/motion.hpp"
 
 namespace prp {
 namespace {
@@ -87,17 +90,22 @@ PrecisionFilter::PrecisionFilter(toolpath::CommandSource& input, PrecisionSettin
       s_(settings),
       movement_(grid_of(s_.movement_digits)),
       feed_(grid_of(s_.feed_digits)),
-      spin_(grid_of(s_.spin_digits)) {}
+      spin_(grid_of(s_.spin_digits)) {
+  for (int k = 0; k < static_cast<int>(std::size(kKeys)); ++k) {
+    zero_of_[k] = k < kFeed ? s_.zero_value : 0.0;
+    const auto& grid = k < kFeed ? movement_ : k == kFeed ? feed_ : spin_;
+    grid_of_[k] = grid ? &*grid : nullptr;
+  }
+  for (double& axis : sent_) axis = std::numeric_limits<double>::quiet_NaN();
+}
 
-// One pass over the parameters. For each one the steps run in the order of spec 3.1: snap to zero,
-// keep an axis that barely moved, round. Values already at the precision stay as they are (an
-// integer stays an integer); a changed value becomes numeric and keeps its change flag.
+// One pass over the parameters. Most values are already at the precision and far from zero and
+// from the axis they move on: telling that takes a few comparisons and one rounding, and such a
+// value is left as it is; any other goes through adjust(), the steps as spec 3.1 orders them.
 bool PrecisionFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
   if (!input_.next(out, kind)) return false;
   if (!out.is_stream_command()) return true;
-  const double zero = s_.zero_value;
   const bool moves = has(kMovesTool, kind);
-  const bool snap_axes = zero > 0 && moves;
   unsigned seen = 0;  // a name given twice: only its first occurrence counts, as with Command::find
   for (toolpath::Parameter& p : out.parameters) {
     const int k = at(kIndex, p.key);
@@ -105,27 +113,42 @@ bool PrecisionFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) 
     seen |= 1u << k;
     toolpath::Value& v = p.value;
     if (!is_number(v)) continue;
-    double x = number_of(v);
-    bool changed = false;
-    auto set = [&](double r) {
-      if (r != x) x = r, changed = true;
-    };
-    if (k < kFeed) {
-      if (zero > 0 && x != 0.0 && std::abs(x) < zero) set(0.0);
-      if (snap_axes && k < 3) {
-        auto last = sent_.axis(k);
-        if (last && x != *last && std::abs(x - *last) < zero) set(*last);
-      }
-      if (movement_) set(movement_->round(x));
-    } else if (k == kFeed && feed_) {
-      set(feed_->round(x));
-    } else if (k == kSpin && spin_) {
-      set(spin_->round(x));
-    }
-    if (changed) v = toolpath::Value::make_numeric(x, v.flag);
-    if (moves && k < 3) sent_.set_axis(k, x);  // where the tool is sent (ToolPosition::update, in this pass)
+    const double x = number_of(v);
+    const bool axis = moves && k < 3;
+    // Each test is false for zero_value <= 0 and for an unknown (NaN) axis, as adjust() would skip them.
+    bool leave = s_.every_value_in_full || (std::abs(x) < zero_of_[k] && x != 0.0) ||
+                 (axis && std::abs(x - sent_[k]) < s_.zero_value && x != sent_[k]);
+    leave = !leave && (!grid_of_[k] || grid_of_[k]->keeps(x));
+    if (!leave) adjust(v, k, moves);
+    else if (axis) sent_[k] = x;
   }
   return true;
+}
+
+// Snap to zero, keep an axis that barely moved, round, in the order of spec 3.1. Values already at
+// the precision stay as they are (an integer stays an integer); a changed value becomes numeric
+// and keeps its change flag.
+void PrecisionFilter::adjust(toolpath::Value& v, int k, bool moves) {
+  const double zero = s_.zero_value;
+  double x = number_of(v);
+  bool changed = false;
+  auto set = [&](double r) {
+    if (r != x) x = r, changed = true;
+  };
+  if (k < kFeed) {
+    if (zero > 0 && x != 0.0 && std::abs(x) < zero) set(0.0);
+    if (zero > 0 && moves && k < 3) {
+      const double last = sent_[k];
+      if (!std::isnan(last) && x != last && std::abs(x - last) < zero) set(last);
+    }
+    if (movement_) set(movement_->round(x));
+  } else if (k == kFeed && feed_) {
+    set(feed_->round(x));
+  } else if (k == kSpin && spin_) {
+    set(spin_->round(x));
+  }
+  if (changed) v = toolpath::Value::make_numeric(x, v.flag);
+  if (moves && k < 3) sent_[k] = x;  // where the tool is sent (ToolPosition::update, in this pass)
 }
 
 }  // namespace prp

@@ -8,7 +8,6 @@
 #include <optional>
 
 #include "prp/filters/kind_source.hpp"
-#include "prp/filters/motion.hpp"
 #include "prp/prp.hpp"
 
 namespace prp {
@@ -16,6 +15,7 @@ namespace prp {
 struct PrecisionSettings {
   double zero_value = 0.0;
   std::optional<int> movement_digits, feed_digits, spin_digits;
+  bool every_value_in_full = false;  // tests: no shortcut for values the filter leaves as they are
 
   static PrecisionSettings from(const MachineParameters& params);
   bool does_nothing() const { return zero_value <= 0 && !movement_digits && !feed_digits && !spin_digits; }
@@ -40,6 +40,11 @@ public:
     return round_general(v);
   }
   double round_general(double v) const;  // the rule as written
+  // round(v) == v (so also for -0, which rounds to +0), without the -0 step for whole numbers.
+  bool keeps(double v) const {
+    if (std::abs(v) <= whole_limit_ && static_cast<double>(static_cast<std::int64_t>(v)) == v) return true;
+    return round_general(v) == v;
+  }
 
 private:
   double scale_;        // 10^digits
@@ -52,10 +57,16 @@ public:
   bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
 private:
+  void adjust(toolpath::Value& v, int k, bool moves);  // the steps of spec 3.1, one by one
+
   KindedInput input_;
   PrecisionSettings s_;
   std::optional<DecimalGrid> movement_, feed_, spin_;
-  ToolPosition sent_;
+  // Per parameter of the filter's list: the zero_value it snaps with (0 for the feed and the
+  // spindle speed: never), and its grid (null: no rounding).
+  double zero_of_[16];
+  const DecimalGrid* grid_of_[16];
+  double sent_[3];  // where the tool is sent, axis by axis; NaN while unknown (it never snaps to it)
 };
 
 }  // namespace prp

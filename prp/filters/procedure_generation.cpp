@@ -51,30 +51,37 @@ ProcedureGeneration::ProcedureGeneration(toolpath::CommandSource& input, const M
 
 bool ProcedureGeneration::next_with_kind(toolpath::Command& out, CommandKind& kind) {
   if (phase_ == Phase::PassThrough && !main_ && !has_held_) return input_.next(out, kind);
-  if (!produce(out)) return false;
-  kind = command_kind(out);
-  return true;
+  return produce(out, kind);
 }
 
-bool ProcedureGeneration::produce(toolpath::Command& out) {
+bool ProcedureGeneration::produce(toolpath::Command& out, CommandKind& kind) {
   if (phase_ == Phase::Collect) phase_ = collect() ? Phase::Main : Phase::PassThrough;
   switch (phase_) {
     case Phase::PassThrough: {
-      if (main_ && main_->read(out)) return true;
+      if (main_ && main_->read(out, kind)) return true;
       main_.reset();
       if (has_held_) {
         has_held_ = false;
         swap(out, held_);
+        kind = command_kind(out);
         return true;
       }
-      CommandKind kind;
       return input_.next(out, kind);
     }
-    case Phase::Main: return next_main(out);
-    case Phase::Body: return next_body(out);
-    case Phase::Points: return next_points(out);
+    case Phase::Main: return next_main(out, kind);
+    case Phase::Body: return next_body(out, kind);
+    case Phase::Points: return next_points(out, kind);
     default: return false;
   }
+}
+
+// The queue holds the few commands made here (calls, brackets) and a job's tool changes.
+bool ProcedureGeneration::pop_queue(toolpath::Command& out, CommandKind& kind) {
+  if (queue_.empty()) return false;
+  swap(out, queue_.front());
+  queue_.pop_front();
+  kind = command_kind(out);
+  return true;
 }
 
 bool ProcedureGeneration::collect() {
@@ -105,21 +112,21 @@ bool ProcedureGeneration::collect() {
         job = Job{};
         job.tool_number = current_tool;
         job.index = c.index;
-        job.offset = bodies_->write(c);
+        job.offset = bodies_->write(c, kind);
         job.first_cycle = cycles_.size();
         toolpath::Command marker;
         marker.name = kJobMarker;
         marker.index = jobs_.size();
-        main_->write(marker);
+        main_->write(marker, K::other);
         in_job = leading = true;
       } else {
         if (c.is_stream_command() && has(kToolChange, kind))
           if (const toolpath::Value* t = c.find("tool_number")) current_tool = *t;
-        main_->write(c);
+        main_->write(c, kind);
       }
       continue;
     }
-    const std::int64_t at = bodies_->write(c);
+    const std::int64_t at = bodies_->write(c, kind);
     if (!c.is_stream_command()) continue;
     // Turning geometry bodies share the label space of subroutines (a cycle's start_line/end_line
     // names its body by label): the jobs' subroutines take other numbers.
@@ -223,18 +230,14 @@ void ProcedureGeneration::bracket(toolpath::Command& out, const char* name, std:
   if (end_of_job) out.set("end_of_job", toolpath::Value::make_logical(*end_of_job));
 }
 
-bool ProcedureGeneration::next_main(toolpath::Command& out) {
-  if (!queue_.empty()) {
-    swap(out, queue_.front());
-    queue_.pop_front();
-    return true;
-  }
-  if (!main_->read(out)) {
+bool ProcedureGeneration::next_main(toolpath::Command& out, CommandKind& kind) {
+  if (pop_queue(out, kind)) return true;
+  if (!main_->read(out, kind)) {
     if (bodies_sent_ || !start_next_procedure()) {
       phase_ = Phase::Done;
       return false;
     }
-    return produce(out);
+    return produce(out, kind);
   }
   if (out.name == kJobMarker) {
     const Job& job = jobs_[out.index];
@@ -245,7 +248,7 @@ bool ProcedureGeneration::next_main(toolpath::Command& out) {
       cycle_ = job.first_cycle;
       skip_tools_ = 0;
       phase_ = Phase::Body;
-      return next_body(out);
+      return next_body(out, kind);
     }
     toolpath::Command start;
     bodies_->read(start);
@@ -256,18 +259,18 @@ bool ProcedureGeneration::next_main(toolpath::Command& out) {
     }
     queue_.emplace_back();
     call(queue_.back(), *job.label, &start);
-    return next_main(out);
+    return next_main(out, kind);
   }
-  const K kind = out.is_stream_command() ? command_kind(out) : K::other;
-  if (kind == K::start_of_file && last_label_ >= first_label_) {
+  const bool stream = out.is_stream_command();
+  if (stream && kind == K::start_of_file && last_label_ >= first_label_) {
     out.set("first_proc_number", toolpath::Value::make_integer(first_label_));
     out.set("last_proc_number", toolpath::Value::make_integer(last_label_));
     out.set("first_user_proc", toolpath::Value::make_integer(last_label_ + 1));
   }
-  if (kind == K::end_of_file && !bodies_sent_) {
+  if (stream && kind == K::end_of_file && !bodies_sent_) {
     swap(end_of_file_, out);
     has_end_of_file_ = true;
-    if (start_next_procedure()) return produce(out);
+    if (start_next_procedure()) return produce(out, kind);
     swap(out, end_of_file_);
     has_end_of_file_ = false;
   }
@@ -309,18 +312,14 @@ bool ProcedureGeneration::start_next_procedure() {
   return !queue_.empty();
 }
 
-bool ProcedureGeneration::next_body(toolpath::Command& out) {
+bool ProcedureGeneration::next_body(toolpath::Command& out, CommandKind& kind) {
   for (;;) {
-    if (!queue_.empty()) {
-      swap(out, queue_.front());
-      queue_.pop_front();
-      return true;
-    }
+    if (pop_queue(out, kind)) return true;
     const Job& job = jobs_[body_job_];
-    if (bodies_->position() >= job.end || !bodies_->read(out)) {
+    if (bodies_->position() >= job.end || !bodies_->read(out, kind)) {
       if (body_inline_) {
         phase_ = Phase::Main;
-        return next_main(out);
+        return next_main(out, kind);
       }
       queue_.emplace_back();
       bracket(queue_.back(), "@end_proc", *job.label, true, last_index_);
@@ -338,7 +337,6 @@ bool ProcedureGeneration::next_body(toolpath::Command& out) {
       --skip_tools_;
       continue;
     }
-    const K kind = command_kind(out);
     if (skipping_points_) {
       if (kind == K::end_drill) skipping_points_ = false;
       if (kind == K::drill_point || kind == K::end_drill) continue;
@@ -356,16 +354,12 @@ bool ProcedureGeneration::next_body(toolpath::Command& out) {
   }
 }
 
-bool ProcedureGeneration::next_points(toolpath::Command& out) {
+bool ProcedureGeneration::next_points(toolpath::Command& out, CommandKind& kind) {
   for (;;) {
-    if (!queue_.empty()) {
-      swap(out, queue_.front());
-      queue_.pop_front();
-      return true;
-    }
-    if (!bodies_->read(out)) return false;
+    if (pop_queue(out, kind)) return true;
+    if (!bodies_->read(out, kind)) return false;
     last_index_ = out.index;
-    if (out.is_stream_command() && command_kind(out) == K::end_drill) {
+    if (out.is_stream_command() && kind == K::end_drill) {
       const std::int64_t label = *cycles_[shared_[next_proc_ - jobs_.size() - 1]].label;
       queue_.emplace_back();
       bracket(queue_.back(), "@end_proc", label, false, last_index_);

@@ -51,12 +51,15 @@ private:
   };
   enum class Phase { Collect, PassThrough, Main, Body, Points, Done };
 
-  bool produce(toolpath::Command& out);  // next() without the kind
+  // Each of these hands out a command and its kind: the spools keep the kinds of the commands they
+  // hold, so a replayed command's name is not classified again.
+  bool produce(toolpath::Command& out, CommandKind& kind);
   bool collect();        // reads the whole input; false when it is structured (pass through)
   void assign_labels();
-  bool next_main(toolpath::Command& out);
-  bool next_body(toolpath::Command& out);
-  bool next_points(toolpath::Command& out);
+  bool next_main(toolpath::Command& out, CommandKind& kind);
+  bool next_body(toolpath::Command& out, CommandKind& kind);
+  bool next_points(toolpath::Command& out, CommandKind& kind);
+  bool pop_queue(toolpath::Command& out, CommandKind& kind);  // false when the queue is empty
   bool start_next_procedure();
   void call(toolpath::Command& out, std::int64_t label, const toolpath::Command* job);
   void bracket(toolpath::Command& out, const char* name, std::int64_t label, std::optional<bool> end_of_job,

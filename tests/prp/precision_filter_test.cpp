@@ -99,6 +99,84 @@ TEST(PrecisionFilter, WholeNumberShortcutIsTheGeneralRuleBitForBit) {
       const double fast = grid.round(v), general = grid.round_general(v);
       if (std::isnan(general)) EXPECT_TRUE(std::isnan(fast)) << digits;
       else EXPECT_EQ(bits(fast), bits(general)) << v << " to " << digits << " digits";
+      EXPECT_EQ(grid.keeps(v), general == v) << v << " to " << digits << " digits";
+    }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+std::uint64_t bits_of(double v) {
+  std::uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+// The filter leaves most values alone after a few comparisons; on random streams (values at and off
+// the grids, near zero_value, near the axis they move on, integers, texts, names given twice, NaN,
+// infinities, -0) and random settings, it gives what working out every value in full gives, bit
+// for bit and kind for kind.
+TEST(PrecisionFilter, ShortcutGivesTheFullStepsResults) {
+  std::mt19937_64 rng(31);
+  auto pick = [&](auto... options) {
+    const double table[] = {static_cast<double>(options)...};
+    return table[rng() % sizeof...(options)];
+  };
+  const char* names[] = {"xpos", "ypos", "zpos", "XPOS", "feed", "spin", "radius", "xcenter_rel", "zstart",
+                         "drill_depth", "apos", "tool_number"};
+  const char* commands[] = {"@line", "@rapid_move", "@arc", "@start_program", "@drill", "@message"};
+  for (int round = 0; round < 200; ++round) {
+    prp::PrecisionSettings s;
+    s.zero_value = pick(0.0, 0.001, 0.001, 0.5, 2.0, -1.0);
+    if (rng() % 4) s.movement_digits = static_cast<int>(pick(3, 3, 0, 1, 4, 16, -1));
+    if (rng() % 2) s.feed_digits = static_cast<int>(pick(0, 1, 2, -2));
+    if (rng() % 2) s.spin_digits = static_cast<int>(pick(0, -2, 3));
+    std::vector<toolpath::Command> in;
+    double around = 10.0;  // values stay near each other, so axes often move less than zero_value
+    for (int i = 0; i < 200; ++i) {
+      toolpath::Command c;
+      c.name = commands[rng() % std::size(commands)];
+      c.depth = rng() % 10 == 0 ? 2 : 1;
+      const int n = static_cast<int>(rng() % 8);
+      for (int j = 0; j < n; ++j) {
+        double v;
+        switch (rng() % 8) {
+          case 0: v = around + pick(0.0, 0.0004, -0.0004, 0.0005, 0.3, -1.7, 1.0); break;
+          case 1: v = pick(0.0, -0.0, 0.0004, -0.0004, 0.0005, 0.001, 1e-300, 0.49, -1.5); break;
+          case 2: v = static_cast<double>(static_cast<std::int64_t>(rng() % 20000) - 10000) / 1000.0; break;
+          case 3: v = std::ldexp(static_cast<double>(rng() >> 11), -static_cast<int>(rng() % 60)); break;
+          case 4: v = pick(std::nan(""), std::numeric_limits<double>::infinity(), -1e300, 2.5, 1234.5678); break;
+          default: v = static_cast<double>(static_cast<std::int64_t>(rng() % 2000) - 1000); break;
+        }
+        toolpath::Value value;
+        switch (rng() % 6) {
+          case 0: value = toolpath::Value::make_integer(static_cast<std::int64_t>(rng() % 5) - 2); break;
+          case 1: value = toolpath::Value::make_string("1.2345"); break;
+          default: value = toolpath::Value::make_numeric(v, rng() % 5 ? toolpath::ChangeFlag::None : toolpath::ChangeFlag::Changed);
+        }
+        c.parameters.push_back({names[rng() % std::size(names)], value});
+      }
+      if (rng() % 3 == 0) around += pick(0.0, 0.0004, 5.0, -3.25);
+      in.push_back(std::move(c));
+    }
+    ListSource fast_in(in), full_in(in);
+    prp::PrecisionFilter fast(fast_in, s);
+    s.every_value_in_full = true;
+    prp::PrecisionFilter full(full_in, s);
+    const auto a = drain(fast), b = drain(full);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      ASSERT_EQ(a[i].parameters.size(), b[i].parameters.size());
+      for (std::size_t j = 0; j < a[i].parameters.size(); ++j) {
+        const toolpath::Value &x = a[i].parameters[j].value, &y = b[i].parameters[j].value;
+        ASSERT_EQ(x.kind, y.kind) << round << " " << i << " " << j;
+        ASSERT_EQ(x.flag, y.flag);
+        ASSERT_EQ(x.integer, y.integer);
+        ASSERT_EQ(bits_of(x.numeric), bits_of(y.numeric)) << round << " " << i << " " << j << " " << x.numeric;
+        ASSERT_EQ(x.text, y.text);
+      }
     }
   }
 }
