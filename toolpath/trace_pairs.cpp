@@ -92,6 +92,71 @@ std::size_t user_value_end(std::string_view text, std::size_t v) {
   return text.size();
 }
 
+// The pair at `at` when its name is the one parameter slot `p` holds (then the name is taken as
+// it is: no copy, no key lookup): where its value starts, else nullptr. A keyed name is a known
+// identifier, so followed by `:` it is the whole name there.
+[[gnu::always_inline]] inline const char* slot_value(const Parameter& p, const char* at, const char* end) {
+  const std::size_t n = p.name.size();
+  if (p.key == ParamKey::none || at + n >= end || at[n] != ':' || !same_name_bytes(at, p.name.data(), n)) return nullptr;
+  return at + n + 1;
+}
+
+// The common run of pairs, from `at` on: each named as the next slot of `out` already is, its
+// value a number (with its change flag) that needs no from_chars, or a bare word, then blanks and
+// the next such pair, or the end of the line. They are stored without the general loop's state;
+// the first pair of any other shape stops the run, unstored, for the general loop (which reads it
+// from the start: nothing of it was kept). Returns where the run stopped, text.size() at the end.
+// `used` counts the slots filled.
+[[gnu::noinline]] std::size_t common_pairs(Command& out, std::size_t& used, std::string_view text, std::size_t at, std::size_t column,
+                         std::uint32_t line) {
+  Parameter* p = out.parameters.data() + used;
+  Parameter* const last = out.parameters.data() + out.parameters.size();
+  const char* const start = text.data();
+  const char* const end = start + text.size();
+  const char* q = start + at;  // the pair being read
+  const char* v = p < last ? slot_value(*p, q, end) : nullptr;
+  if (!v) return at;
+  for (;;) {
+    // Here `v` is where the value of the pair at `q`, for slot `p`, starts.
+    const NumberScan number = scan_terminated_number(v);
+    const char* k;  // where the value ends
+    ChangeFlag flag = ChangeFlag::None;
+    if (number.length > 0) {
+      k = v + number.length;
+      flag = flag_letter(*k);
+      k += flag != ChangeFlag::None;
+    } else if (is_ident_start(*v)) {
+      k = v + 1;
+      while (is_ident_char(*k)) ++k;
+    } else {
+      break;
+    }
+    // Then the end of the line, or blanks and the next slot's pair.
+    const char* next = end;
+    const char* next_value = nullptr;
+    if (k != end) {
+      if (!is_blank(*k)) break;
+      next = is_blank(k[1]) ? start + skip_blanks(text, static_cast<std::size_t>(k + 1 - start)) : k + 1;
+      if (next != end) {
+        if (p + 1 == last || !(next_value = slot_value(p[1], next, end))) break;
+      }
+    }
+    p->line = line;
+    p->column = static_cast<std::uint32_t>(column + static_cast<std::size_t>(v - start));  // below 2^32: see kMaxLine
+    if (number.length > 0) {
+      if (!store_exact_number(p->value, number, flag)) break;
+    } else {
+      store_word(p->value, {v, static_cast<std::size_t>(k - v)});
+    }
+    ++p;
+    q = next;
+    v = next_value;
+    if (!v) break;  // the end of the line
+  }
+  used = static_cast<std::size_t>(p - out.parameters.data());
+  return static_cast<std::size_t>(q - start);
+}
+
 }  // namespace
 
 // The job's and the machine's user parameters, as SolidCAM writes them on `..>` lines of
@@ -130,9 +195,15 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   assert(text.data() + text.size() == line_.data() + line_.size());
   std::size_t i = skip_blanks(text, 0);
   if (i == text.size()) return;
+  // The slots used so far, in a register while the pairs are read (the stores into the values
+  // could alias a member); written back to used_parameters_ before each return.
+  std::size_t used = used_parameters_;
+  // Most lines are one common run to their end; where it stopped, the loop below takes one pair.
+  std::size_t stopped = i = common_pairs(out, used, text, i, column, line32_);
+  if (i == text.size()) return void(used_parameters_ = used);
   Slots slots(out);
-  PairName name = name_at(slots, used_parameters_, text, i);
-  if (name.length == 0) {
+  PairName name = name_at(slots, used, text, i);
+  if (name.length == 0) {  // no pair yet (the run stops only before a `name:`)
     if (user_pair_name_length(text.substr(i)) > 0) return parse_user_pairs(out, text, i, column);
     // SolidCAM's words for a command without parameters (`(1)@end_of_file     ==> no parameters`).
     if (otherwise == TraceLine::Kind::Partial && trim_right(text.substr(i)) == "no parameters") return;
@@ -143,9 +214,6 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   }
   // Where the next pair starts when the value's first token, ending at `k`, is followed by blanks
   // and the next `name:` (then in `next`) or by the end of the line (text.size()); npos otherwise.
-  // The slots used so far, in a register while the pairs are read (the stores into the values
-  // could alias a member); written back to used_parameters_ before each return.
-  std::size_t used = used_parameters_;
   PairName next;
   auto next_pair_after = [&](std::size_t k) __attribute__((always_inline)) {
     if (k == text.size()) return k;
@@ -158,6 +226,12 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   };
   for (;;) {
     // Here `name` is the `name:` at i.
+    if (name.in_slot && i != stopped) {
+      const std::size_t from = i;
+      stopped = i = common_pairs(out, used, text, i, column, line32_);
+      if (i == text.size()) return void(used_parameters_ = used);
+      if (i != from) name = name_at(slots, used, text, i);
+    }
     Parameter* param_slot;
     if (name.in_slot) {
       param_slot = &out.parameters[used++];
