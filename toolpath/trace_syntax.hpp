@@ -251,8 +251,19 @@ inline Parameter& add_parameter(Command& out, std::size_t& used, std::string_vie
 // Stores the scanned number `digits` (its text, without the flag) into `out` (trace_value.cpp).
 void store_number(Value& out, const NumberScan& n, std::string_view digits, ChangeFlag flag, const Place& where);
 
-// Stores a bare word (an identifier): TRUE or FALSE in any case as Logical, else an Enum (trace_value.cpp).
-void store_word(Value& out, std::string_view word);
+// Stores a bare word (an identifier): TRUE or FALSE in any case as Logical, else an Enum. Inline:
+// the reader stores a word or two per command, mostly the one the slot holds already.
+[[gnu::always_inline]] inline void store_word(Value& out, std::string_view word) {
+  out.flag = ChangeFlag::None;
+  if ((word.size() == 4 || word.size() == 5) && (iequals(word, "true") || iequals(word, "false"))) {
+    out.kind = ValueKind::Logical;
+    out.logical = iequals(word, "true");
+    return;
+  }
+  out.kind = ValueKind::Enum;
+  // A recycled slot mostly holds the same word (`arc_direction:CCW` command after command).
+  if (!same_short_text(out.text, word)) out.text.assign(word);
+}
 
 // Parses one value's text into `out`, reusing its string buffer (trace_value.cpp).
 void parse_value_into(Value& out, std::string_view text, const Place& where);
