@@ -103,12 +103,13 @@ std::size_t user_value_end(std::string_view text, std::size_t v) {
 
 // The common run of pairs, from `at` on: each named as the next slot of `out` already is, its
 // value a number (with its change flag) that needs no from_chars, or a bare word, then blanks and
-// the next such pair, or the end of the line. They are stored without the general loop's state;
-// the first pair of any other shape stops the run, unstored, for the general loop (which reads it
-// from the start: nothing of it was kept). Returns where the run stopped, text.size() at the end.
-// `used` counts the slots filled.
-[[gnu::noinline]] std::size_t common_pairs(Command& out, std::size_t& used, std::string_view text, std::size_t at, std::size_t column,
-                         std::uint32_t line) {
+// the next such pair, or the end of the line. They are stored without the general loop's state.
+// A value is stored as soon as it is read, before what follows it is looked at: when that is
+// not the end of the line or the next slot's pair, the run stops at the pair, not counted, and
+// the general loop reads it again from its name and stores it over (or throws). Returns where the
+// run stopped, text.size() at the end; `used` counts the slots filled.
+[[gnu::noinline]] std::size_t common_pairs(Command& out, std::size_t& used, std::string_view text, std::size_t at,
+                                           std::size_t column, std::uint32_t line) {
   Parameter* p = out.parameters.data() + used;
   Parameter* const last = out.parameters.data() + out.parameters.size();
   const char* const start = text.data();
@@ -116,42 +117,41 @@ std::size_t user_value_end(std::string_view text, std::size_t v) {
   const char* q = start + at;  // the pair being read
   const char* v = p < last ? slot_value(*p, q, end) : nullptr;
   if (!v) return at;
+  // A value's column from its address (below 2^32: see kMaxLine).
+  const std::uintptr_t column_base = column - reinterpret_cast<std::uintptr_t>(start);
   for (;;) {
     // Here `v` is where the value of the pair at `q`, for slot `p`, starts.
-    const NumberScan number = scan_terminated_number(v);
+    p->line = line;
+    p->column = static_cast<std::uint32_t>(column_base + reinterpret_cast<std::uintptr_t>(v));
     const char* k;  // where the value ends
-    ChangeFlag flag = ChangeFlag::None;
-    if (number.length > 0) {
+    if (const NumberScan number = scan_terminated_number(v); number.length > 0) {
       k = v + number.length;
-      flag = flag_letter(*k);
+      const ChangeFlag flag = flag_letter(*k);
       k += flag != ChangeFlag::None;
+      if (!store_exact_number(p->value, number, flag)) break;
     } else if (is_ident_start(*v)) {
       k = v + 1;
       while (is_ident_char(*k)) ++k;
+      store_word(p->value, {v, static_cast<std::size_t>(k - v)});
     } else {
       break;
     }
-    // Then the end of the line, or blanks and the next slot's pair.
-    const char* next = end;
-    const char* next_value = nullptr;
+    // Then the end of the line, or blanks and the next slot's pair. The byte after the line is not
+    // a blank: the blanks end by then.
     if (k != end) {
       if (!is_blank(*k)) break;
-      next = is_blank(k[1]) ? start + skip_blanks(text, static_cast<std::size_t>(k + 1 - start)) : k + 1;
-      if (next != end) {
-        if (p + 1 == last || !(next_value = slot_value(p[1], next, end))) break;
+      do ++k;
+      while (is_blank(*k));
+      if (k != end) {
+        if (p + 1 == last || !(v = slot_value(p[1], k, end))) break;
+        ++p;
+        q = k;
+        continue;
       }
     }
-    p->line = line;
-    p->column = static_cast<std::uint32_t>(column + static_cast<std::size_t>(v - start));  // below 2^32: see kMaxLine
-    if (number.length > 0) {
-      if (!store_exact_number(p->value, number, flag)) break;
-    } else {
-      store_word(p->value, {v, static_cast<std::size_t>(k - v)});
-    }
     ++p;
-    q = next;
-    v = next_value;
-    if (!v) break;  // the end of the line
+    q = end;
+    break;
   }
   used = static_cast<std::size_t>(p - out.parameters.data());
   return static_cast<std::size_t>(q - start);
