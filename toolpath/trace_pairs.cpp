@@ -108,7 +108,7 @@ std::size_t user_value_end(std::string_view text, std::size_t v) {
 // not the end of the line or the next slot's pair, the run stops at the pair, not counted, and
 // the general loop reads it again from its name and stores it over (or throws). Returns where the
 // run stopped, text.size() at the end; `used` counts the slots filled.
-[[gnu::noinline]] std::size_t common_pairs(Command& out, std::size_t& used, std::string_view text, std::size_t at,
+[[gnu::always_inline]] inline std::size_t common_pairs(Command& out, std::size_t& used, std::string_view text, std::size_t at,
                                            std::size_t column, std::uint32_t line) {
   Parameter* p = out.parameters.data() + used;
   Parameter* const last = out.parameters.data() + out.parameters.size();
@@ -139,9 +139,9 @@ std::size_t user_value_end(std::string_view text, std::size_t v) {
     // Then the end of the line, or blanks and the next slot's pair. The byte after the line is not
     // a blank: the blanks end by then.
     if (k != end) {
-      if (!is_blank(*k)) break;
+      if (*k != ' ' && *k != '\t') break;  // is_blank, without the table's address in a register
       do ++k;
-      while (is_blank(*k));
+      while (*k == ' ' || *k == '\t');
       if (k != end) {
         if (p + 1 == last || !(v = slot_value(p[1], k, end))) break;
         ++p;
@@ -193,14 +193,22 @@ Parameter& new_slot(Command& out, std::size_t& used, std::string_view name) {
 // (read_line): the scans below may look at it.
 void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t column, TraceLine::Kind otherwise) {
   assert(text.data() + text.size() == line_.data() + line_.size());
-  std::size_t i = skip_blanks(text, 0);
+  const std::size_t i = skip_blanks(text, 0);
   if (i == text.size()) return;
+  // Most lines are one common run to their end; the general loop takes what is left.
+  std::size_t used = used_parameters_;
+  const std::size_t stopped = common_pairs(out, used, text, i, column, line32_);
+  used_parameters_ = used;
+  if (stopped != text.size()) parse_other_pairs(out, text, stopped, column, otherwise);
+}
+
+// The pairs from `i` on, where the common run stopped (at the first pair when it took none).
+[[gnu::noinline]] void TraceReader::parse_other_pairs(Command& out, std::string_view text, std::size_t i, std::size_t column,
+                                    TraceLine::Kind otherwise) {
   // The slots used so far, in a register while the pairs are read (the stores into the values
   // could alias a member); written back to used_parameters_ before each return.
   std::size_t used = used_parameters_;
-  // Most lines are one common run to their end; where it stopped, the loop below takes one pair.
-  std::size_t stopped = i = common_pairs(out, used, text, i, column, line32_);
-  if (i == text.size()) return void(used_parameters_ = used);
+  std::size_t stopped = i;  // the common run stopped here: not tried again
   Slots slots(out);
   PairName name = name_at(slots, used, text, i);
   if (name.length == 0) {  // no pair yet (the run stops only before a `name:`)
