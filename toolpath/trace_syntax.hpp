@@ -148,36 +148,36 @@ inline NumberScan scan_number(std::string_view s) {
 // scan_number for text followed in memory by a byte that cannot continue a number: the reader's
 // lines are followed by '\n', '\r' or '\0'. The same result, without bound checks.
 inline NumberScan scan_terminated_number(const char* s) {
-  NumberScan n;
+  // Locals, put together at the end: the inlined scan then keeps them in registers.
   const char* p = s;
-  if (*p == '+' || *p == '-') n.negative = *p++ == '-';
+  bool negative = false;
+  if (*p == '+' || *p == '-') negative = *p++ == '-';
   std::uint64_t mantissa = 0;
   unsigned d = 0;
   const char* start = p;
   while ((d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) mantissa = mantissa * 10 + d, ++p;
   int digits = static_cast<int>(p - start);
+  int decimals = 0;
+  bool numeric = false;
   if (*p == '.') {
-    n.numeric = true;
+    numeric = true;
     start = ++p;
     while ((d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) mantissa = mantissa * 10 + d, ++p;
-    n.decimals = static_cast<int>(p - start);
-    digits += n.decimals;
+    decimals = static_cast<int>(p - start);
+    digits += decimals;
   }
-  n.digits = digits;
-  n.mantissa = mantissa;
-  if (digits == 0) return n;
-  if ((*p | 0x20) == 'e') {  // 'e' or 'E', no other byte
+  bool exponent = false;
+  if (digits > 0 && (*p | 0x20) == 'e') {  // 'e' or 'E', no other byte
     const char* q = p + 1;
     if (*q == '+' || *q == '-') ++q;
     const char* exp_start = q;
     while (is_digit(*q)) ++q;
     if (q > exp_start) {
-      n.numeric = n.exponent = true;
+      numeric = exponent = true;
       p = q;
     }
   }
-  n.length = static_cast<std::size_t>(p - s);
-  return n;
+  return {digits == 0 ? 0 : static_cast<std::size_t>(p - s), numeric, exponent, negative, digits, decimals, mantissa};
 }
 
 // The exact double of a scanned plain decimal when its mantissa (at most 19 digits) is below 2^53
