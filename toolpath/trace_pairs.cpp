@@ -92,6 +92,71 @@ std::size_t user_value_end(std::string_view text, std::size_t v) {
   return text.size();
 }
 
+// The pair at `at` when its name is the one parameter slot `p` holds (then the name is taken as
+// it is: no copy, no key lookup): where its value starts, else nullptr. A keyed name is a known
+// identifier, so followed by `:` it is the whole name there.
+[[gnu::always_inline]] inline const char* slot_value(const Parameter& p, const char* at, const char* end) {
+  const std::size_t n = p.name.size();
+  if (p.key == ParamKey::none || at + n >= end || at[n] != ':' || !same_name_bytes(at, p.name.data(), n)) return nullptr;
+  return at + n + 1;
+}
+
+// The common run of pairs, from `at` on: each named as the next slot of `out` already is, its
+// value a number (with its change flag) that needs no from_chars, or a bare word, then blanks and
+// the next such pair, or the end of the line. They are stored without the general loop's state.
+// A value is stored as soon as it is read, before what follows it is looked at: when that is
+// not the end of the line or the next slot's pair, the run stops at the pair, not counted, and
+// the general loop reads it again from its name and stores it over (or throws). Returns where the
+// run stopped, text.size() at the end; `used` counts the slots filled.
+[[gnu::always_inline]] inline std::size_t common_pairs(Command& out, std::size_t& used, std::string_view text, std::size_t at,
+                                           std::size_t column, std::uint32_t line) {
+  Parameter* p = out.parameters.data() + used;
+  Parameter* const last = out.parameters.data() + out.parameters.size();
+  const char* const start = text.data();
+  const char* const end = start + text.size();
+  const char* q = start + at;  // the pair being read
+  const char* v = p < last ? slot_value(*p, q, end) : nullptr;
+  if (!v) return at;
+  // A value's column from its address (below 2^32: see kMaxLine).
+  const std::uintptr_t column_base = column - reinterpret_cast<std::uintptr_t>(start);
+  for (;;) {
+    // Here `v` is where the value of the pair at `q`, for slot `p`, starts.
+    p->line = line;
+    p->column = static_cast<std::uint32_t>(column_base + reinterpret_cast<std::uintptr_t>(v));
+    const char* k;  // where the value ends
+    if (const NumberScan number = scan_terminated_number(v); number.length > 0) {
+      k = v + number.length;
+      const ChangeFlag flag = flag_letter(*k);
+      k += flag != ChangeFlag::None;
+      if (!store_exact_number(p->value, number, flag)) break;
+    } else if (is_ident_start(*v)) {
+      k = v + 1;
+      while (is_ident_char(*k)) ++k;
+      store_word(p->value, {v, static_cast<std::size_t>(k - v)});
+    } else {
+      break;
+    }
+    // Then the end of the line, or blanks and the next slot's pair. The byte after the line is not
+    // a blank: the blanks end by then.
+    if (k != end) {
+      if (*k != ' ' && *k != '\t') break;  // is_blank, without the table's address in a register
+      do ++k;
+      while (*k == ' ' || *k == '\t');
+      if (k != end) {
+        if (p + 1 == last || !(v = slot_value(p[1], k, end))) break;
+        ++p;
+        q = k;
+        continue;
+      }
+    }
+    ++p;
+    q = end;
+    break;
+  }
+  used = static_cast<std::size_t>(p - out.parameters.data());
+  return static_cast<std::size_t>(q - start);
+}
+
 }  // namespace
 
 // The job's and the machine's user parameters, as SolidCAM writes them on `..>` lines of
@@ -128,11 +193,25 @@ Parameter& new_slot(Command& out, std::size_t& used, std::string_view name) {
 // (read_line): the scans below may look at it.
 void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t column, TraceLine::Kind otherwise) {
   assert(text.data() + text.size() == line_.data() + line_.size());
-  std::size_t i = skip_blanks(text, 0);
+  const std::size_t i = skip_blanks(text, 0);
   if (i == text.size()) return;
+  // Most lines are one common run to their end; the general loop takes what is left.
+  std::size_t used = used_parameters_;
+  const std::size_t stopped = common_pairs(out, used, text, i, column, line32_);
+  used_parameters_ = used;
+  if (stopped != text.size()) parse_other_pairs(out, text, stopped, column, otherwise);
+}
+
+// The pairs from `i` on, where the common run stopped (at the first pair when it took none).
+[[gnu::noinline]] void TraceReader::parse_other_pairs(Command& out, std::string_view text, std::size_t i, std::size_t column,
+                                    TraceLine::Kind otherwise) {
+  // The slots used so far, in a register while the pairs are read (the stores into the values
+  // could alias a member); written back to used_parameters_ before each return.
+  std::size_t used = used_parameters_;
+  std::size_t stopped = i;  // the common run stopped here: not tried again
   Slots slots(out);
-  PairName name = name_at(slots, used_parameters_, text, i);
-  if (name.length == 0) {
+  PairName name = name_at(slots, used, text, i);
+  if (name.length == 0) {  // no pair yet (the run stops only before a `name:`)
     if (user_pair_name_length(text.substr(i)) > 0) return parse_user_pairs(out, text, i, column);
     // SolidCAM's words for a command without parameters (`(1)@end_of_file     ==> no parameters`).
     if (otherwise == TraceLine::Kind::Partial && trim_right(text.substr(i)) == "no parameters") return;
@@ -143,9 +222,6 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   }
   // Where the next pair starts when the value's first token, ending at `k`, is followed by blanks
   // and the next `name:` (then in `next`) or by the end of the line (text.size()); npos otherwise.
-  // The slots used so far, in a register while the pairs are read (the stores into the values
-  // could alias a member); written back to used_parameters_ before each return.
-  std::size_t used = used_parameters_;
   PairName next;
   auto next_pair_after = [&](std::size_t k) __attribute__((always_inline)) {
     if (k == text.size()) return k;
@@ -158,6 +234,12 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   };
   for (;;) {
     // Here `name` is the `name:` at i.
+    if (name.in_slot && i != stopped) {
+      const std::size_t from = i;
+      stopped = i = common_pairs(out, used, text, i, column, line32_);
+      if (i == text.size()) return void(used_parameters_ = used);
+      if (i != from) name = name_at(slots, used, text, i);
+    }
     Parameter* param_slot;
     if (name.in_slot) {
       param_slot = &out.parameters[used++];

@@ -25,6 +25,14 @@ constexpr std::size_t kMaxLine = std::size_t{16} << 20;
 // appended): a column always fits the 32 bits a Parameter keeps (parse_pairs stores it as is).
 static_assert(kMaxLine + 2 * kChunk < 0xffffffff);
 
+// A line that starts with `(` is a header when `)@` follows somewhere: mostly right after the
+// number, `(1)@line`, so that is looked at first.
+bool opens_header(std::string_view rest) {
+  std::size_t j = 1;
+  while (j < rest.size() && is_digit(rest[j])) ++j;
+  return rest.substr(j, 2) == ")@" || rest.find(")@") != std::string_view::npos;
+}
+
 }  // namespace
 
 TraceReader::TraceReader(std::istream& in, std::string file_name) : in_(in), file_(std::move(file_name)) {}
@@ -113,7 +121,7 @@ bool TraceReader::next(Command& out) {
     std::size_t i = skip_blanks(line_, 0);
     if (i == line_.size() || line_[i] == ';') continue;  // blank lines and `;` comments
     std::string_view rest = line_.substr(i);
-    if (rest.front() == '@' || (rest.front() == '(' && rest.find(")@") != std::string_view::npos)) {
+    if (rest.front() == '@' || (rest.front() == '(' && opens_header(rest))) {
       have_line_ = true;  // the next command's header
       break;
     }

@@ -41,6 +41,7 @@ private:
   bool parse_header(Command& out);
   void parse_body_line(Command& out, bool first_after_header, std::size_t first_non_blank);
   void parse_pairs(Command& out, std::string_view text, std::size_t column, TraceLine::Kind otherwise);
+  void parse_other_pairs(Command& out, std::string_view text, std::size_t i, std::size_t column, TraceLine::Kind otherwise);
   void parse_user_pairs(Command& out, std::string_view text, std::size_t first, std::size_t column);
 
   std::unique_ptr<std::istream> owned_;

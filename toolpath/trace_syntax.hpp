@@ -148,36 +148,36 @@ inline NumberScan scan_number(std::string_view s) {
 // scan_number for text followed in memory by a byte that cannot continue a number: the reader's
 // lines are followed by '\n', '\r' or '\0'. The same result, without bound checks.
 inline NumberScan scan_terminated_number(const char* s) {
-  NumberScan n;
+  // Locals, put together at the end: the inlined scan then keeps them in registers.
   const char* p = s;
-  if (*p == '+' || *p == '-') n.negative = *p++ == '-';
+  bool negative = false;
+  if (*p == '+' || *p == '-') negative = *p++ == '-';
   std::uint64_t mantissa = 0;
   unsigned d = 0;
   const char* start = p;
   while ((d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) mantissa = mantissa * 10 + d, ++p;
   int digits = static_cast<int>(p - start);
+  int decimals = 0;
+  bool numeric = false;
   if (*p == '.') {
-    n.numeric = true;
+    numeric = true;
     start = ++p;
     while ((d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) mantissa = mantissa * 10 + d, ++p;
-    n.decimals = static_cast<int>(p - start);
-    digits += n.decimals;
+    decimals = static_cast<int>(p - start);
+    digits += decimals;
   }
-  n.digits = digits;
-  n.mantissa = mantissa;
-  if (digits == 0) return n;
-  if ((*p | 0x20) == 'e') {  // 'e' or 'E', no other byte
+  bool exponent = false;
+  if (digits > 0 && (*p | 0x20) == 'e') {  // 'e' or 'E', no other byte
     const char* q = p + 1;
     if (*q == '+' || *q == '-') ++q;
     const char* exp_start = q;
     while (is_digit(*q)) ++q;
     if (q > exp_start) {
-      n.numeric = n.exponent = true;
+      numeric = exponent = true;
       p = q;
     }
   }
-  n.length = static_cast<std::size_t>(p - s);
-  return n;
+  return {digits == 0 ? 0 : static_cast<std::size_t>(p - s), numeric, exponent, negative, digits, decimals, mantissa};
 }
 
 // The exact double of a scanned plain decimal when its mantissa (at most 19 digits) is below 2^53
@@ -251,8 +251,19 @@ inline Parameter& add_parameter(Command& out, std::size_t& used, std::string_vie
 // Stores the scanned number `digits` (its text, without the flag) into `out` (trace_value.cpp).
 void store_number(Value& out, const NumberScan& n, std::string_view digits, ChangeFlag flag, const Place& where);
 
-// Stores a bare word (an identifier): TRUE or FALSE in any case as Logical, else an Enum (trace_value.cpp).
-void store_word(Value& out, std::string_view word);
+// Stores a bare word (an identifier): TRUE or FALSE in any case as Logical, else an Enum. Inline:
+// the reader stores a word or two per command, mostly the one the slot holds already.
+[[gnu::always_inline]] inline void store_word(Value& out, std::string_view word) {
+  out.flag = ChangeFlag::None;
+  if ((word.size() == 4 || word.size() == 5) && (iequals(word, "true") || iequals(word, "false"))) {
+    out.kind = ValueKind::Logical;
+    out.logical = iequals(word, "true");
+    return;
+  }
+  out.kind = ValueKind::Enum;
+  // A recycled slot mostly holds the same word (`arc_direction:CCW` command after command).
+  if (!same_short_text(out.text, word)) out.text.assign(word);
+}
 
 // Parses one value's text into `out`, reusing its string buffer (trace_value.cpp).
 void parse_value_into(Value& out, std::string_view text, const Place& where);

@@ -54,18 +54,6 @@ void parse_value_into(Value& out, std::string_view text, const Place& where) {
   out.text.assign(text);
 }
 
-void store_word(Value& out, std::string_view word) {
-  out.flag = ChangeFlag::None;
-  if ((word.size() == 4 || word.size() == 5) && (iequals(word, "true") || iequals(word, "false"))) {
-    out.kind = ValueKind::Logical;
-    out.logical = iequals(word, "true");
-    return;
-  }
-  out.kind = ValueKind::Enum;
-  // A recycled slot mostly holds the same word (`arc_direction:CCW` command after command).
-  if (!same_short_text(out.text, word)) out.text.assign(word);
-}
-
 }  // namespace trace_syntax
 
 Value parse_value(std::string_view text, const SourcePosition& where) {

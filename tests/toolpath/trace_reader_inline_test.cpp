@@ -29,13 +29,14 @@ std::ostream& operator<<(std::ostream& os, const Outcome& o) {
   return os;
 }
 
+// The parameters of the last command read (one vector reused, as a pipeline does), or the error.
 Outcome read(const std::string& text) {
   std::istringstream in(text);
   toolpath::TraceReader reader(in, "t.trace");
   toolpath::Command c;
   Outcome o;
   try {
-    while (reader.next(c)) o.parameters.insert(o.parameters.end(), c.parameters.begin(), c.parameters.end());
+    while (reader.next(c)) o.parameters = c.parameters;
   } catch (const toolpath::InputError& e) {
     o.error = e.what();
   }
@@ -53,16 +54,16 @@ std::size_t pair_name(const std::string& s, std::size_t at) {
   return at + n < s.size() && s[at + n] == ':' ? n : 0;
 }
 
-// The pairs of `text` (what follows `==>` on line 1, whose first byte is in column `column`),
+// The pairs of `text` (what follows `==>` on line `line`, whose first byte is in column `column`),
 // one unquoted value at a time, by the documented rule.
-Outcome reference(const std::string& text, std::size_t column) {
+Outcome reference(const std::string& text, std::size_t column, std::size_t line = 1) {
   Outcome o;
   std::size_t i = 0;
   while (i < text.size() && blank(text[i])) ++i;
   try {
     while (i < text.size()) {
       const std::size_t n = pair_name(text, i);
-      if (n == 0) throw toolpath::InputError({"t.trace", 1, column + i}, "expected `name:value`");
+      if (n == 0) throw toolpath::InputError({"t.trace", line, column + i}, "expected `name:value`");
       const std::size_t v = i + n + 1;
       std::size_t end = text.size(), next = text.size();
       for (std::size_t k = v; k < text.size(); ++k) {
@@ -75,7 +76,7 @@ Outcome reference(const std::string& text, std::size_t column) {
           break;
         }
       }
-      o.parameters.emplace_back(text.substr(i, n), toolpath::parse_value(text.substr(v, end - v), {"t.trace", 1, column + v}));
+      o.parameters.emplace_back(text.substr(i, n), toolpath::parse_value(text.substr(v, end - v), {"t.trace", line, column + v}));
       i = next;
     }
   } catch (const toolpath::InputError& e) {
@@ -89,7 +90,24 @@ void check(const std::string& pairs) {
   const std::string header = "(1)@c ==>";
   Outcome got = read(header + pairs + "\n");
   if (!got.error.empty()) got.parameters.clear();
-  EXPECT_EQ(got, reference(pairs, header.size() + 1)) << '`' << pairs << '`';
+  const Outcome expected = reference(pairs, header.size() + 1);
+  EXPECT_EQ(got, expected) << '`' << pairs << '`';
+  // Read again into slots that hold the names already (the reader's common run): after a command
+  // of the same name with the same names, or with the first ones, holding other values.
+  const Outcome names = reference(pairs + " ", header.size() + 1);  // the names, whatever the last value
+  const char* other_values[] = {"0", "CW", "1.5T", "'x y'", "7 z", "TRUE"};
+  for (std::size_t keep : {names.parameters.size(), names.parameters.size() / 2}) {
+    std::string before = header;
+    for (std::size_t k = 0; k < keep; ++k) {
+      before += ' ';
+      before += names.parameters[k].name;
+      before += ':';
+      before += other_values[k % std::size(other_values)];
+    }
+    got = read(before + "\n" + header + pairs + "\n");
+    if (!got.error.empty()) got.parameters.clear();
+    EXPECT_EQ(got, reference(pairs, header.size() + 1, 2)) << '`' << before << "` then `" << pairs << '`';
+  }
 }
 
 TEST(TraceReaderInline, NumbersAsTheGeneralRuleReadsThem) {
@@ -103,10 +121,31 @@ TEST(TraceReaderInline, NumbersAsTheGeneralRuleReadsThem) {
                           "ccw", "true", "False", "FALSE", "truex", "tru", "_x", "a_b9", "e5", "E", "T", "x.y", "x-y",
                           "CW:1", "CW'", "x\ty"};
   for (const char* v : values) {
-    for (const char* after : {"", "   ", " b:1", "    b:1.0", "\tb:2 ", " 7", " b c:1"}) {
+    // Names in the catalogue (the common run takes those) and outside it.
+    for (const char* after : {"", "   ", " b:1", "    b:1.0", "\tb:2 ", " 7", " b c:1", " feed:1", "   feed:-1.5 ",
+                              "\tfeed:2 zpos:CW", " feed c:1", " feed:'q'", " feed:1 b:2"}) {
       check(std::string(" a:") + v + after);
       check(std::string(" a:1 x:") + v + after);
+      check(std::string(" xpos:") + v + after);
+      check(std::string(" xpos:1 ypos:") + v + after);
     }
+  }
+}
+
+// Catalogue names (the common run) with values from the same bytes, blanks between the pairs.
+TEST(TraceReaderInline, RandomPairsOfCatalogueNames) {
+  std::mt19937 rng(20261128);
+  const char* names[] = {"xpos", "ypos", "feed", "arc_direction", "xcenter_rel", "b"};
+  const std::string alphabet = "0123456789+-.eETFtf x:ab\t_rue";
+  for (int round = 0; round < 20000; ++round) {
+    std::string pairs;
+    for (std::size_t pair = rng() % 5; pair > 0; --pair) {
+      pairs += rng() % 4 == 0 ? "  " : " ";
+      pairs += names[rng() % std::size(names)];
+      pairs += ':';
+      for (std::size_t k = rng() % 8; k > 0; --k) pairs += alphabet[rng() % alphabet.size()];
+    }
+    check(pairs);
   }
 }
 
