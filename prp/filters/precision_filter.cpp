@@ -116,9 +116,9 @@ bool PrecisionFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) 
     const double x = number_of(v);
     const bool axis = moves && k < 3;
     // Each test is false for zero_value <= 0 and for an unknown (NaN) axis, as adjust() would skip them.
-    bool leave = s_.every_value_in_full || (std::abs(x) < zero_of_[k] && x != 0.0) ||
-                 (axis && std::abs(x - sent_[k]) < s_.zero_value && x != sent_[k]);
-    leave = !leave && (!grid_of_[k] || grid_of_[k]->keeps(x));
+    const bool in_full = s_.every_value_in_full || (std::abs(x) < zero_of_[k] && x != 0.0) ||
+                         (axis && std::abs(x - sent_[k]) < s_.zero_value && x != sent_[k]);
+    const bool leave = !in_full && (!grid_of_[k] || grid_of_[k]->keeps(x));
     if (!leave) adjust(v, k, moves);
     else if (axis) sent_[k] = x;
   }
