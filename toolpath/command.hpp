@@ -99,6 +99,10 @@ struct Command {
     trace.swap(other.trace);
   }
   friend void swap(Command& a, Command& b) noexcept { a.swap(b); }
+  // Puts the name on the heap, where it stays (assigning a name never shrinks it): a swap of two
+  // such names exchanges pointers, where two names inside their strings are copied by three
+  // memcpy calls. The buffers that sources swap with, command after command, are given this once.
+  void keep_name_on_heap() { name.reserve(sizeof(std::string)); }
 
   // The same command wherever it was read (like Parameter, the position is not compared).
   friend bool operator==(const Command& a, const Command& b) {

@@ -6,7 +6,10 @@ namespace toolpath {
 
 PrefetchSource::PrefetchSource(CommandSource& inner, std::size_t batch_size, std::size_t batches)
     : inner_(inner), ring_(batches < 2 ? 2 : batches) {
-  for (Batch& b : ring_) b.commands.resize(batch_size < 1 ? 1 : batch_size);
+  for (Batch& b : ring_) {
+    b.commands.resize(batch_size < 1 ? 1 : batch_size);
+    for (Command& c : b.commands) c.keep_name_on_heap();
+  }
   worker_ = std::thread([this] { work(); });
 }
 

@@ -21,7 +21,7 @@ public:
 // (the engine sets `next_command` from it).
 class LookaheadSource final : public CommandSource {
 public:
-  explicit LookaheadSource(CommandSource& inner) : inner_(inner) {}
+  explicit LookaheadSource(CommandSource& inner) : inner_(inner) { buffered_.keep_name_on_heap(); }
   bool next(Command& out) override;
   // The command the next call to next() returns, or nullptr at the end of the stream.
   const Command* peek();

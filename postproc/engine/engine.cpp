@@ -182,6 +182,7 @@ public:
     // Three commands in rotation: the one before (its name is prev_command), the current one and
     // the one after it (next_command, read before the current one runs): no name is copied.
     std::array<toolpath::Command, 3> rotation;
+    for (toolpath::Command& c : rotation) c.keep_name_on_heap();
     toolpath::Command* previous = nullptr;
     toolpath::Command* current = &rotation[0];
     toolpath::Command* following = &rotation[1];
