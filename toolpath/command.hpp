@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "toolpath/param_key.hpp"
+#include "toolpath/short_text.hpp"
 #include "toolpath/value.hpp"
 
 namespace toolpath {
@@ -27,6 +28,14 @@ struct Parameter {
   void rename(std::string_view to) {
     name.assign(to);
     key = param_key(to);
+  }
+  // Names it as the catalogue spells `to`; a recycled parameter already so named is left as it is
+  // (readers refill commands slot by slot, mostly with the names the slots held).
+  void rename(ParamKey to) {
+    const std::string_view spelling = param_name(to);
+    if (key == to && same_short_text(name, spelling)) return;
+    name.assign(spelling);
+    key = to;
   }
 
   std::string name;

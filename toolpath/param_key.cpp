@@ -8,13 +8,7 @@
 namespace toolpath {
 namespace {
 
-constexpr std::string_view kNames[] = {
-    "",
-#define POSTPROC_PARAM(name) #name,
-#include "toolpath/param_names.inc"
-#undef POSTPROC_PARAM
-};
-static_assert(std::size(kNames) == param_key_count + 1);
+constexpr const auto& kNames = detail::param_names;
 
 constexpr std::size_t kLongest = [] {
   std::size_t n = 0;
@@ -66,11 +60,6 @@ ParamKey param_key(std::string_view name) {
     if (k == 0) return ParamKey::none;
     if (iequals(kNames[k], name)) return static_cast<ParamKey>(k);
   }
-}
-
-std::string_view param_name(ParamKey key) {
-  const auto k = static_cast<std::size_t>(key);
-  return k < std::size(kNames) ? kNames[k] : std::string_view{};
 }
 
 }  // namespace toolpath

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <string_view>
 
 namespace toolpath {
@@ -34,7 +35,21 @@ inline constexpr std::size_t param_key_count = static_cast<std::size_t>([] {
 // name is not in the catalogue. A hash lookup: a few dozen instructions, no allocation.
 ParamKey param_key(std::string_view name);
 
-// The catalogue spelling of a key ("xpos"); empty for ParamKey::none.
-std::string_view param_name(ParamKey key);
+namespace detail {
+inline constexpr std::string_view param_names[] = {
+    "",
+#define POSTPROC_PARAM(name) #name,
+#include "toolpath/param_names.inc"
+#undef POSTPROC_PARAM
+};
+static_assert(std::size(param_names) == param_key_count + 1);
+}  // namespace detail
+
+// The catalogue spelling of a key ("xpos"); empty for ParamKey::none. A table read, inline: the
+// readers name recycled parameters by key, command after command.
+constexpr std::string_view param_name(ParamKey key) {
+  const auto k = static_cast<std::size_t>(key);
+  return k < std::size(detail::param_names) ? detail::param_names[k] : std::string_view{};
+}
 
 }  // namespace toolpath

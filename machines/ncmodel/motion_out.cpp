@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "toolpath/short_text.hpp"
 #include "toolpath/value.hpp"
 
 namespace ncmodel {
@@ -48,10 +47,7 @@ Value& MotionOut::slot(K key, toolpath::ValueKind kind) {
   auto& params = current_->parameters;
   toolpath::Parameter& p = fill_ < params.size() ? params[fill_] : params.emplace_back();
   ++fill_;
-  if (p.key != key || !toolpath::same_short_text(p.name, toolpath::param_name(key))) {  // in the catalogue spelling
-    p.name.assign(toolpath::param_name(key));
-    p.key = key;
-  }
+  p.rename(key);
   p.line = p.column = 0;
   p.value.kind = kind;
   p.value.flag = toolpath::ChangeFlag::None;

@@ -1,7 +1,6 @@
 #include "prp/filters/command_spool.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cstring>
 #include <stdexcept>
 #include <string_view>
@@ -26,16 +25,6 @@ constexpr unsigned kKinds = 1
     PRP_COMMAND_KINDS(PRP_KIND_COUNT)
 #undef PRP_KIND_COUNT
     ;
-
-// The catalogue spellings by key, without a call per parameter.
-const std::string_view* catalogue() {
-  static const auto names = [] {
-    std::array<std::string_view, toolpath::param_key_count + 1> t{};
-    for (std::size_t k = 1; k < t.size(); ++k) t[k] = toolpath::param_name(static_cast<ParamKey>(k));
-    return t;
-  }();
-  return names.data();
-}
 
 [[noreturn]] void damaged() { throw std::runtime_error("the temporary file of jobs is damaged"); }
 
@@ -130,7 +119,6 @@ std::int64_t CommandSpool::write(const toolpath::Command& c, CommandKind kind) {
   }
   const std::int64_t at = end();
   const std::size_t start = used_;
-  const std::string_view* names = catalogue();
   Writer w(out_.get() + start + 4);
   w.put(static_cast<std::uint8_t>(kind));
   w.text(c.name);
@@ -140,7 +128,7 @@ std::int64_t CommandSpool::write(const toolpath::Command& c, CommandKind kind) {
   w.put(static_cast<std::uint32_t>(c.parameters.size()));
   for (const auto& p : c.parameters) {
     const bool catalogued =
-        p.key != ParamKey::none && toolpath::same_short_text(p.name, names[static_cast<std::size_t>(p.key)]);
+        p.key != ParamKey::none && toolpath::same_short_text(p.name, toolpath::param_name(p.key));
     w.put(static_cast<std::uint16_t>(catalogued ? static_cast<std::uint16_t>(p.key) : 0));
     const toolpath::Value& v = p.value;
     w.put(static_cast<std::uint8_t>(static_cast<unsigned>(v.kind) | static_cast<unsigned>(v.flag) << 4));
@@ -243,7 +231,6 @@ bool CommandSpool::read(toolpath::Command& out, CommandKind& kind) {
   out.depth = in.get<std::int32_t>();
   out.line = in.get<std::uint32_t>();
   shape(out.parameters, in.get<std::uint32_t>());
-  const std::string_view* names = catalogue();
   for (auto& p : out.parameters) {
     in.need(kParameterFixed);
     const auto code = in.get<std::uint16_t>();
@@ -278,11 +265,7 @@ bool CommandSpool::read(toolpath::Command& out, CommandKind& kind) {
     }
     if (code != 0) {
       if (code > toolpath::param_key_count) damaged();
-      const auto key = static_cast<ParamKey>(code);
-      if (p.key != key || !toolpath::same_short_text(p.name, names[code])) {
-        p.name.assign(names[code]);  // the catalogue spelling, as written
-        p.key = key;                 // already known: no rename(), no hashing
-      }
+      p.rename(static_cast<ParamKey>(code));  // the catalogue spelling, as written: no hashing
     } else if (const std::string_view name = in.text(); !toolpath::same_short_text(p.name, name)) {
       p.rename(name);  // else the name is already there, and its key with it
     }
