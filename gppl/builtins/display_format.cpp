@@ -214,33 +214,28 @@ char* format_number(char* p, const DisplayFormat& f, const Value& v, bool& handl
 
 }  // namespace
 
-constexpr std::size_t short_item = 32;
+static_assert(formatted_room == DisplayFormat::max_affix + exact::max_number + DisplayFormat::max_affix);
+
+char* write_formatted(char* out, const DisplayFormat& f, const Value& v) {
+  // Affixes are copied whole (a fixed-size copy is a few moves; the length decides what counts).
+  std::memcpy(out, f.prefix.data(), DisplayFormat::max_affix);
+  char* p = out + f.prefix_length;
+  bool handled = false;
+  p = format_number(p, f, v, handled);
+  if (!handled) p = exact::format_number(p, f, v, exact::Digits::Quick);
+  if (p == nullptr) return out;  // option d: not even the affixes
+  std::memcpy(p, f.postfix.data(), DisplayFormat::max_affix);
+  return p + f.postfix_length;
+}
 
 void append_formatted(std::string& out, const DisplayFormat& f, const Value& v) {
   if (v.type == Type::String) {
     out += v.text;
     return;
   }
-  // Affixes are copied whole (a fixed-size copy is a few moves; the length decides what counts).
-  char buf[DisplayFormat::max_affix + exact::max_number + DisplayFormat::max_affix];
-  std::memcpy(buf, f.prefix.data(), DisplayFormat::max_affix);
-  char* p = buf + f.prefix_length;
-  bool handled = false;
-  p = format_number(p, f, v, handled);
-  if (!handled) p = exact::format_number(p, f, v, exact::Digits::Quick);
-  if (p == nullptr) return;  // option d: not even the affixes
-  std::memcpy(p, f.postfix.data(), DisplayFormat::max_affix);
-  p += f.postfix_length;
-  const auto length = static_cast<std::size_t>(p - buf);
-  if (length <= short_item) {
-    // A constant-size append compiles to a few moves instead of a memcpy call; the extra bytes
-    // are cut off again at once.
-    const std::size_t before = out.size();
-    out.append(buf, short_item);
-    out.resize(before + length);
-  } else {
-    out.append(buf, length);
-  }
+  char buf[formatted_room];
+  const char* end = write_formatted(buf, f, v);
+  out.append(buf, static_cast<std::size_t>(end - buf));
 }
 
 std::string format_value(const DisplayFormat& f, const Value& v) {

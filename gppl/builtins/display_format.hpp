@@ -66,6 +66,15 @@ DisplayFormat parse_display_format(std::string_view spec);
 // is beyond 1e100 in magnitude or not a number.
 void append_formatted(std::string& out, const DisplayFormat& f, const Value& v);
 
+// The bytes write_formatted() may touch past `out`: both affixes, the longest number part and the
+// fixed-size copies the printer makes past the end of what it keeps.
+inline constexpr std::size_t formatted_room = 2 * DisplayFormat::max_affix + 2 * DisplayFormat::max_digits + 110;
+
+// append_formatted() for a number, integer or logical (not a string) written straight to `out`,
+// which has formatted_room bytes of room; returns the end of the text (`out` itself when option d
+// suppresses the item). The interpreter writes into its output line this way without a copy.
+char* write_formatted(char* out, const DisplayFormat& f, const Value& v);
+
 // Convenience for tests and tostr(): the formatted text as a new string.
 std::string format_value(const DisplayFormat& f, const Value& v);
 

@@ -114,21 +114,21 @@ void Interpreter::log_inputs(bool on) { state_->log_inputs = on; }
 
 void Interpreter::State::input(std::uint32_t index) {
   const InputStatement& s = program.inputs[index];
-  std::string prompt;
+  OutputLine prompt;
   render(program.items[s.prompt], prompt);
   const VarRef& ref = program.refs[s.target];
   Cell& target = element(ref);  // an index out of range is an error even without an answer
   const PreparedAnswer* answer = index < answers.size() && answers[index] ? &*answers[index] : nullptr;
   if (answer) assign(target, answer->value, ChangeOverride::Compute, &ref);
   if (log == nullptr || !log_inputs) return;
-  *log << fmt::format("{}: input '{}': {} = {} ({})\n", where(program, s.pos), prompt, s.name, shown(target.value),
+  *log << fmt::format("{}: input '{}': {} = {} ({})\n", where(program, s.pos), prompt.view(), s.name, shown(target.value),
                       answer ? "answer from " + answer->source : "no answer: value kept");
 }
 
 void Interpreter::State::print(std::uint32_t first, std::uint32_t count) {
-  std::string text;
+  OutputLine text;
   for (std::uint32_t i = first; i < first + count; ++i) render(program.items[i], text);
-  if (log != nullptr) *log << fmt::format("{}: print: {}\n", where(program, current->pos), text);
+  if (log != nullptr) *log << fmt::format("{}: print: {}\n", where(program, current->pos), text.view());
 }
 
 }  // namespace gppl

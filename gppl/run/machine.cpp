@@ -55,8 +55,6 @@ Interpreter::State::State(std::shared_ptr<const Program> p, OutputSink& s)
   format_sites.resize(program.format_sites + 3);
   constant_formats.resize(program.format_specs.size());
   procedure_trace_level.assign(program.procedures.size(), -1);
-  line.reserve(256);
-  piece.reserve(64);
 }
 
 void Interpreter::State::fail(ErrorCode code, std::string_view name, std::string_view detail) const {

@@ -14,6 +14,7 @@
 #include "gppl/error_codes.hpp"
 #include "gppl/gppl.hpp"
 #include "gppl/program.hpp"
+#include "gppl/run/output_line.hpp"
 
 namespace gppl {
 
@@ -85,11 +86,12 @@ struct Interpreter::State {
   bool in_init = false;
 
   // output line model (6.2)
-  std::string line;
+  OutputLine line;
   bool line_open = false;
   bool separator_pending = false;
   LineOrigin origin;
-  std::string piece;
+  OutputLine piece;              // an item measured or printed before it joins the line
+  std::string line_function_text;  // start_line / end_line, which the host writes
   std::vector<FormatCache> format_sites;      // per generate item, then 3 defaults (integer, numeric, blknum)
   std::vector<FormatCache> constant_formats;  // per Program::format_specs entry
 
@@ -206,7 +208,7 @@ struct Interpreter::State {
 
   // output.cpp
   void generate(std::uint32_t first, std::uint32_t count);
-  void render(const GenItem& item, std::string& out);
+  void render(const GenItem& item, OutputLine& out);
   const DisplayFormat& format_for(const GenItem& item, const Value& v);
   // The display format of a variable item when it is parsed already and still applies (a constant
   // format, or the `name_f` text the item's cache holds); nullptr: format_for() works it out.
@@ -228,7 +230,7 @@ struct Interpreter::State {
   const DisplayFormat& parse_format(FormatCache& cache, std::string_view spec, SourcePos pos);
   // Text onto the output line; the usual case (an open line, no separator owed) inline.
   void append(std::string_view text) {
-    if (line_open && !separator_pending) line.append(text.data(), text.size());
+    if (line_open && !separator_pending) line.append(text);
     else append_opening(text);
   }
   void append_opening(std::string_view text);

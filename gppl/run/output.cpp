@@ -40,10 +40,10 @@ void Interpreter::State::open_line(bool after_break) {
 void Interpreter::State::append_opening(std::string_view text) {
   if (!line_open) open_line();
   if (separator_pending && !text.empty()) {
-    if (text.front() != ' ') line += ' ';
+    if (text.front() != ' ') line.push_back(' ');
     separator_pending = false;
   }
-  line += text;
+  line.append(text);
 }
 
 void Interpreter::State::flush() {
@@ -51,12 +51,11 @@ void Interpreter::State::flush() {
   line_open = false;
   // The blank after a block number is written even when nothing follows it: SolidCAM's `{nb}`
   // alone gives `N210370 ` (docs/gppl-language.md, "Block numbers").
-  if (separator_pending) line += ' ';
+  if (separator_pending) line.push_back(' ');
   separator_pending = false;
   if (!is_directive(line)) {
-    if (globals[program.slots.remove_blanks].value.logical) line.erase(std::remove(line.begin(), line.end(), ' '), line.end());
-    const std::string& end = globals[program.slots.end_block_text].value.text;
-    if (!end.empty()) line += end;
+    if (globals[program.slots.remove_blanks].value.logical) line.remove_all(' ');
+    line.append(globals[program.slots.end_block_text].value.text);
   }
   sink.write_line(line, origin);
   if (trace != nullptr) trace_output(line);
@@ -77,7 +76,7 @@ void Interpreter::State::new_block(SourcePos pos) {
   const std::int64_t max = globals[program.slots.blknum_max].value.integer;
   if (n > max) fail_at(pos, ErrorCode::BlockNumberTooBig, {}, fmt::format("blknum {} is above blknum_max {}: raise blknum_max in @init_post, "
                                                                               "or set blknum back when it gets there", n, max));
-  line += globals[program.slots.blknum_letter].value.text;
+  line.append(globals[program.slots.blknum_letter].value.text);
   const std::string& spec = globals[program.slots.blknum_f].value.text;
   const DisplayFormat& f = cached(format_sites[program.format_sites + 2],
                                   spec.empty() ? std::string_view(globals[program.slots.integer_def_f].value.text) : spec, pos);
@@ -88,7 +87,7 @@ void Interpreter::State::new_block(SourcePos pos) {
   v.logical = false;
   v.text.clear();
   try {
-    append_formatted(line, f, v);
+    line.commit(write_formatted(line.room(formatted_room), f, v));
   } catch (const Error& e) {
     pop_scratch();
     throw Error(e.number(), program.position(pos), e.text());
@@ -152,21 +151,21 @@ const DisplayFormat& Interpreter::State::format_for(const GenItem& item, const V
                 spec.empty() ? (numeric ? kNumericDefault : kIntegerDefault) : std::string_view(spec), item.pos);
 }
 
-void Interpreter::State::render(const GenItem& item, std::string& out) {
+void Interpreter::State::render(const GenItem& item, OutputLine& out) {
   if (item.kind == ItemKind::Text) {
-    out += program.constants[item.a].text;
+    out.append(program.constants[item.a].text);
     return;
   }
   if (item.ref != kNone) {  // a variable: no scratch value, and its format is usually known already
     const Value& value = element(program.refs[item.ref]).value;
     if (value.type == Type::String) {
-      out += value.text;  // strings print verbatim; a format is ignored (6.4)
+      out.append(value.text);  // strings print verbatim; a format is ignored (6.4)
       return;
     }
     const DisplayFormat* f = known_format(item);
     if (!f) f = &format_for(item, value);
     try {
-      append_formatted(out, *f, value);
+      out.commit(write_formatted(out.room(formatted_room), *f, value));
     } catch (const Error& e) {
       throw Error(e.number(), program.position(item.pos), e.text());
     }
@@ -175,11 +174,11 @@ void Interpreter::State::render(const GenItem& item, std::string& out) {
   Value& v = push_scratch();
   eval(item.a, v);
   if (v.type == Type::String) {
-    out += v.text;
+    out.append(v.text);
   } else {
     const DisplayFormat& f = format_for(item, v);
     try {
-      append_formatted(out, f, v);
+      out.commit(write_formatted(out.room(formatted_room), f, v));
     } catch (const Error& e) {
       pop_scratch();
       throw Error(e.number(), program.position(item.pos), e.text());
@@ -205,7 +204,8 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
         const std::int64_t blanks = item.kind == ItemKind::ColRel ? n : n - 1 - std::int64_t(line.size());
         if (blanks > 0) {
           if (blanks > 10000) fail_at(item.pos, ErrorCode::OutOfRange, {}, fmt::format("column {} is too far", n));
-          piece.assign(std::size_t(blanks), ' ');
+          piece.clear();
+          piece.append_fill(std::size_t(blanks), ' ');
           append(piece);
         }
         break;
@@ -218,11 +218,11 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
           try {
             render(item, line);
           } catch (...) {
-            line.resize(at);
+            line.shrink(at);
             throw;
           }
           if (separator_pending && line.size() > at) {
-            if (line[at] != ' ') line.insert(at, 1, ' ');
+            if (line[at] != ' ') line.insert(at, ' ');
             separator_pending = false;
           }
         } else {
@@ -234,9 +234,9 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
         break;
       }
       case ItemKind::LineFunction:
-        piece.clear();
-        render_line_function(item, piece);
-        append(piece);
+        line_function_text.clear();
+        render_line_function(item, line_function_text);
+        append(line_function_text);
         break;
       case ItemKind::Group: {
         // Its members follow it: a group that prints simply goes on with them (nested groups too).
@@ -250,9 +250,9 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
             if (m.kind == ItemKind::Text || m.kind == ItemKind::Value) render(m, piece);
           }
           if (!line_open) open_line();
-          if (separator_pending) line += ' ';
+          if (separator_pending) line.push_back(' ');
           separator_pending = false;
-          line.append(piece.size(), ' ');
+          line.append_fill(piece.size(), ' ');
         }
         i += members;
         break;
