@@ -79,7 +79,7 @@ function VList(el, count, render) {
       rows.set(i, r);
     }
   }
-  el.addEventListener('scroll', () => draw(false));
+  el.onscroll = () => draw(false);  // a list made again for the same pane replaces the old one's handler
   return {
     draw, row: (i) => rows.get(i),
     show(i) { const top = i * ROW; if (top < el.scrollTop || top > el.scrollTop + el.clientHeight - ROW) el.scrollTop = Math.max(0, top - el.clientHeight / 2); draw(true); },
