@@ -32,15 +32,6 @@ double angle_about(const Eigen::Vector3d& p, const Eigen::Vector3d& c, PlaneAxes
 
 }  // namespace
 
-PlaneAxes axes(Plane plane) {
-  switch (plane) {
-    case Plane::XY: return {0, 1, 2};
-    case Plane::YZ: return {1, 2, 0};
-    case Plane::ZX: return {2, 0, 1};
-  }
-  return {0, 1, 2};
-}
-
 std::string_view plane_name(Plane plane) {
   switch (plane) {
     case Plane::XY: return "XY";

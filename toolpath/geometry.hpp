@@ -21,7 +21,15 @@ enum class Direction : std::uint8_t { CW, CCW };
 struct PlaneAxes {
   int first, second, normal;  // indices into x y z
 };
-PlaneAxes axes(Plane plane);
+// Inline: the arc filter asks for every arc.
+constexpr PlaneAxes axes(Plane plane) {
+  switch (plane) {
+    case Plane::XY: return {0, 1, 2};
+    case Plane::YZ: return {1, 2, 0};
+    case Plane::ZX: return {2, 0, 1};
+  }
+  return {0, 1, 2};
+}
 std::string_view plane_name(Plane plane);
 std::optional<Plane> parse_plane(std::string_view name);  // case-insensitive XY / YZ / ZX
 

@@ -23,10 +23,11 @@ enum ArcField { kX, kY, kZ, kApos, kBpos, kXcenter, kYcenter, kXrel, kYrel, kZst
 
 using toolpath::ParamKey;
 
-// Per key: 1 + its ArcField, kSetEndPoint for a set end point, 0 for anything else.
-constexpr std::uint8_t kSetEndPoint = kFieldCount + 1;
+// Per key: its ArcField, kSetEndPoint for a set end point, kOther for anything else.
+constexpr std::uint8_t kSetEndPoint = kFieldCount, kOther = kFieldCount + 1;
 constexpr auto kCodes = [] {
   KeyTable<std::uint8_t> t{};
+  t.fill(kOther);
   const std::pair<ParamKey, ArcField> fields[] = {
       {ParamKey::xpos, kX},          {ParamKey::ypos, kY},
       {ParamKey::zpos, kZ},          {ParamKey::apos, kApos},
@@ -36,7 +37,7 @@ constexpr auto kCodes = [] {
       {ParamKey::arc_size, kSize},   {ParamKey::arc_plane, kPlane},
       {ParamKey::arc_direction, kDirection}, {ParamKey::arc_plane_m, kPlaneM},
       {ParamKey::radius, kRadius}};
-  for (auto [key, field] : fields) at(t, key) = static_cast<std::uint8_t>(1 + field);
+  for (auto [key, field] : fields) at(t, key) = static_cast<std::uint8_t>(field);
   for (ParamKey key : kSetEndPoints) at(t, key) = kSetEndPoint;
   return t;
 }();
@@ -44,24 +45,113 @@ constexpr auto kCodes = [] {
 }  // namespace
 
 struct ArcFilter::Fields {
+  // From the last parameter to the first, each stored under its code without a test: the first of
+  // each name is stored last (as Command::find finds it), and any other parameter lands in a slot
+  // nobody reads.
   explicit Fields(const toolpath::Command& c) {
-    for (const toolpath::Parameter& p : c.parameters) {
-      const int code = at(kCodes, p.key);
-      if (code == 0) continue;
-      if (code == kSetEndPoint) names_set_end_point = true;
-      else if (!values[code - 1]) values[code - 1] = &p.value;
+    const toolpath::Parameter* p = c.parameters.data() + c.parameters.size();
+    while (p != c.parameters.data()) {
+      --p;
+      slots[at(kCodes, p->key)] = &p->value;
     }
+    names_set_end_point = slots[kSetEndPoint] != nullptr;
   }
-  const toolpath::Value* find(ArcField f) const { return values[f]; }
+  const toolpath::Value* find(ArcField f) const { return slots[f]; }
   // As prp::number().
   std::optional<double> number(ArcField f) const {
-    const toolpath::Value* v = values[f];
+    const toolpath::Value* v = slots[f];
     if (!v || !is_number(*v)) return std::nullopt;
     return number_of(*v);
   }
-  const toolpath::Value* values[kFieldCount] = {};
+  const toolpath::Value* slots[kOther + 1] = {};  // per ArcField, then kSetEndPoint and kOther
   bool names_set_end_point = false;
 };
+
+namespace {
+
+// In the arc plane, from the centre: (ux, uy) to the start, (vx, vy) to the end, their squares and
+// lengths as square roots (within a few units in the last place of hypot's). The circle check and
+// the shortcut both work from these.
+struct Spokes {
+  Spokes(const Eigen::Vector3d& start, const Eigen::Vector3d& end, const Eigen::Vector3d& centre,
+         toolpath::geometry::PlaneAxes a)
+      : ux(start[a.first] - centre[a.first]),
+        uy(start[a.second] - centre[a.second]),
+        vx(end[a.first] - centre[a.first]),
+        vy(end[a.second] - centre[a.second]),
+        u2(ux * ux + uy * uy),
+        v2(vx * vx + vy * vy),
+        u(std::sqrt(u2)),
+        v(std::sqrt(v2)) {}
+  double ux, uy, vx, vy, u2, v2, u, v;
+};
+
+// An arc is one only when its start and end lie on one circle about its centre, and its `radius`
+// (when the stream gives it) is that circle's: otherwise the post writes an arc the machine
+// refuses or, with an R word, one through other points. Trace numbers carry 3 decimals or more,
+// so their rounding stays well inside the tolerance.
+void check_circle(const toolpath::Command& c, const Spokes& d, std::optional<double> radius, double circle_tolerance,
+                  bool shortcut) {
+  // Surely within the tolerance, told from the square roots: they differ from hypot's distances by
+  // a few units in the last place (1e-15 of the radius), far inside the margins (1e-12) taken here.
+  // Any other arc (near a limit, or of squares out of range; NaN fails every comparison) is
+  // checked with hypot as below.
+  constexpr double kMargin = 1e-12;
+  const double room = circle_tolerance * (1 + 1e-4 * d.u) * (1 - kMargin);
+  if (shortcut && d.u2 < 1e100 && d.v2 < 1e100 && d.u > 1e-6 * (1 + kMargin) &&
+      std::abs(d.v - d.u) + kMargin * (d.u + d.v) < room &&
+      (!radius || std::abs(*radius - d.u) + kMargin * (std::abs(*radius) + d.u) < room))
+    return;
+  const double r_start = std::hypot(d.ux, d.uy), r_end = std::hypot(d.vx, d.vy);
+  const double tolerance = circle_tolerance * (1 + 1e-4 * r_start);
+  if (r_start <= 1e-6)  // below any machine's resolution; smaller real arcs are still arcs
+    throw StreamError(c, "arc with zero radius: its centre is where it starts");
+  if (std::abs(r_end - r_start) > tolerance)
+    throw StreamError(c, fmt::format("the arc's end point is not on its circle: {:g} from the centre, its start {:g} "
+                                     "(more than {:g} apart)",
+                                     r_end, r_start, tolerance));
+  if (radius && std::abs(*radius - r_start) > tolerance)
+    throw StreamError(c, fmt::format("radius {:g} is not the arc's: its start is {:g} from its centre (more than {:g} "
+                                     "apart)",
+                                     *radius, r_start, tolerance));
+}
+
+// arc_surely_passes(), told without make_arc's atan2, fmod and hypot. The switches that could
+// change an arc are off, or settled by the exact expressions plan() uses; the sweep and the radius
+// are bounded from products of the coordinates. Their rounding errors (a few units in the last
+// place: 1e-13 degrees, 1e-15 of the radius) are far below the margins (1e-9), and an arc near 0,
+// 180 or 360 degrees, or of a radius below 1e-50 or above 1e50, is worked out in full. NaN fails
+// every comparison here, so it is worked out too. `rise`: the end minus the start along the normal.
+bool surely_passes(const ArcSettings& s, const Spokes& d, double rise, Plane plane, Direction direction,
+                   bool five_axis, bool tilted) {
+  if (!s.arc_exist || s.quadrants || (five_axis && !s.arc_5x) || (tilted && s.main_planes) ||
+      (plane != s.machine_plane && !s.zx_yz))
+    return false;
+  if (!s.arc_3d && std::abs(rise) > std::max(s.zero_value, 1e-9)) return false;  // helical
+  const double ux = d.ux, uy = d.uy, vx = d.vx, vy = d.vy, u2 = d.u2, v2 = d.v2;
+  if (!(u2 > 1e-100 && u2 < 1e100 && v2 > 1e-100 && v2 < 1e100)) return false;
+  const double n = d.u * d.v;
+  // n sin(sweep): positive for a sweep below 180 degrees in the arc's direction.
+  const double turn = direction == Direction::CCW ? ux * vy - uy * vx : uy * vx - ux * vy;
+  constexpr double kMargin = 1e-9;
+  double low;  // the sweep is at least this (degrees)
+  if (turn > kMargin * n) {
+    // 0 < sweep < 180: at least 90 when the dot product is not positive, else at least its sine (radians).
+    low = ux * vx + uy * vy <= 0 ? 90.0 : turn / n * (180.0 / std::numbers::pi);
+  } else if (turn < -kMargin * n && s.gt_180) {
+    low = 180.0;  // 180 < sweep < 360, which only gt_180 = N would cut
+  } else {
+    return false;
+  }
+  low = low * (1 - kMargin) - kMargin;
+  if (!(low > s.eps_angle)) return false;                             // plan(): one line below eps_angle
+  const double radius = d.u;                                          // hypot(ux, uy), within 1e-15
+  if (s.max_radius && !(radius * (1 + kMargin) <= *s.max_radius)) return false;  // chords above the limit
+  // length() is at least the radius times the sweep in radians (its helical part only adds).
+  return s.min_length <= 0 || radius * low * (std::numbers::pi / 180.0) * (1 - kMargin) > s.min_length;
+}
+
+}  // namespace
 
 ArcSettings ArcSettings::from(const MachineParameters& p) {
   ArcSettings s;
@@ -124,33 +214,9 @@ void ArcFilter::follow(const toolpath::Command& out, CommandKind kind, const Fie
   if (!moves || f.names_set_end_point) history_.observe(out, kind);
   if (moves)
     for (int i = 0; i < 3; ++i)
-      if (const toolpath::Value* v = f.values[kX + i]; v && is_number(*v)) position_.set_axis(i, number_of(*v));
-  if (const toolpath::Value* v = f.values[kApos]; v && is_number(*v)) apos_ = number_of(*v);
-  if (const toolpath::Value* v = f.values[kBpos]; v && is_number(*v)) bpos_ = number_of(*v);
-}
-
-// An arc is one only when its start and end lie on one circle about its centre, and its `radius`
-// (when the stream gives it) is that circle's: otherwise the post writes an arc the machine
-// refuses or, with an R word, one through other points. Trace numbers carry 3 decimals or more,
-// so their rounding stays well inside the tolerance.
-void ArcFilter::check_circle(const toolpath::Command& c, const Eigen::Vector3d& start, const Eigen::Vector3d& end,
-                             const Eigen::Vector3d& centre, const toolpath::geometry::PlaneAxes& a,
-                             std::optional<double> radius) const {
-  const auto in_plane = [&](const Eigen::Vector3d& p) {
-    return std::hypot(p[a.first] - centre[a.first], p[a.second] - centre[a.second]);
-  };
-  const double r_start = in_plane(start), r_end = in_plane(end);
-  const double tolerance = settings_.circle_tolerance * (1 + 1e-4 * r_start);
-  if (r_start <= 1e-6)  // below any machine's resolution; smaller real arcs are still arcs
-    throw StreamError(c, "arc with zero radius: its centre is where it starts");
-  if (std::abs(r_end - r_start) > tolerance)
-    throw StreamError(c, fmt::format("the arc's end point is not on its circle: {:g} from the centre, its start {:g} "
-                                     "(more than {:g} apart)",
-                                     r_end, r_start, tolerance));
-  if (radius && std::abs(*radius - r_start) > tolerance)
-    throw StreamError(c, fmt::format("radius {:g} is not the arc's: its start is {:g} from its centre (more than {:g} "
-                                     "apart)",
-                                     *radius, r_start, tolerance));
+      if (const toolpath::Value* v = f.slots[kX + i]; v && is_number(*v)) position_.set_axis(i, number_of(*v));
+  if (const toolpath::Value* v = f.slots[kApos]; v && is_number(*v)) apos_ = number_of(*v);
+  if (const toolpath::Value* v = f.slots[kBpos]; v && is_number(*v)) bpos_ = number_of(*v);
 }
 
 // Decides what replaces the arc (spec 3.2 process_arc); pieces_ stays 0 when it passes unchanged.
@@ -203,12 +269,14 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Fields&
   auto zstart = plane == Plane::XY ? f.number(kZstart) : std::nullopt;
   start[a.normal] = zstart ? *zstart : position_.axis(a.normal).value_or(end[a.normal]);
   centre[a.normal] = start[a.normal];
-  if (settings_.check_circles) check_circle(c, start, end, centre, a, f.number(kRadius));
+  const Spokes spokes(start, end, centre, a);
+  if (settings_.check_circles)
+    check_circle(c, spokes, f.number(kRadius), settings_.circle_tolerance, !settings_.work_out_every_arc);
 
   bool tilted = false;  // in the machine's axes the arc lies in none of XY, YZ, ZX
   if (const toolpath::Value* m = f.find(kPlaneM)) tilted = !toolpath::geometry::parse_plane(m->text);
   if (!settings_.work_out_every_arc &&
-      arc_surely_passes(settings_, start, end, centre, plane, direction, five_axis_, tilted))
+      surely_passes(settings_, spokes, end[a.normal] - start[a.normal], plane, direction, five_axis_, tilted))
     return;
 
   arc_ = toolpath::geometry::make_arc(start, end, centre, plane, direction, f.number(kSize));
@@ -243,43 +311,11 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Fields&
   pieces_ = static_cast<int>(cuts_.size()) - 1;
 }
 
-// Told without make_arc's atan2, fmod and hypot. The switches that could change an arc are off, or
-// settled by the exact expressions plan() uses; the sweep and the radius are bounded from products
-// of the coordinates. Their rounding errors (a few units in the last place: 1e-13 degrees, 1e-15
-// of the radius) are far below the margins (1e-9), and an arc near 0, 180 or 360 degrees, or of a
-// radius below 1e-50 or above 1e50, is worked out in full. NaN fails every comparison here, so it
-// is worked out too.
 bool arc_surely_passes(const ArcSettings& s, const Eigen::Vector3d& start, const Eigen::Vector3d& end,
                        const Eigen::Vector3d& centre, Plane plane, Direction direction, bool five_axis, bool tilted) {
-  if (!s.arc_exist || s.quadrants || (five_axis && !s.arc_5x) || (tilted && s.main_planes) ||
-      (plane != s.machine_plane && !s.zx_yz))
-    return false;
   const auto a = toolpath::geometry::axes(plane);
-  if (!s.arc_3d && std::abs(end[a.normal] - start[a.normal]) > std::max(s.zero_value, 1e-9)) return false;  // helical
-  // In the arc plane, from the centre: u to the start, v to the end.
-  const double ux = start[a.first] - centre[a.first], uy = start[a.second] - centre[a.second];
-  const double vx = end[a.first] - centre[a.first], vy = end[a.second] - centre[a.second];
-  const double u2 = ux * ux + uy * uy, v2 = vx * vx + vy * vy;
-  if (!(u2 > 1e-100 && u2 < 1e100 && v2 > 1e-100 && v2 < 1e100)) return false;
-  const double n = std::sqrt(u2) * std::sqrt(v2);
-  // n sin(sweep): positive for a sweep below 180 degrees in the arc's direction.
-  const double turn = direction == Direction::CCW ? ux * vy - uy * vx : uy * vx - ux * vy;
-  constexpr double kMargin = 1e-9;
-  double low;  // the sweep is at least this (degrees)
-  if (turn > kMargin * n) {
-    // 0 < sweep < 180: at least 90 when the dot product is not positive, else at least its sine (radians).
-    low = ux * vx + uy * vy <= 0 ? 90.0 : turn / n * (180.0 / std::numbers::pi);
-  } else if (turn < -kMargin * n && s.gt_180) {
-    low = 180.0;  // 180 < sweep < 360, which only gt_180 = N would cut
-  } else {
-    return false;
-  }
-  low = low * (1 - kMargin) - kMargin;
-  if (!(low > s.eps_angle)) return false;                             // plan(): one line below eps_angle
-  const double radius = std::sqrt(u2);                                // hypot(ux, uy), within 1e-15
-  if (s.max_radius && !(radius * (1 + kMargin) <= *s.max_radius)) return false;  // chords above the limit
-  // length() is at least the radius times the sweep in radians (its helical part only adds).
-  return s.min_length <= 0 || radius * low * (std::numbers::pi / 180.0) * (1 - kMargin) > s.min_length;
+  return surely_passes(s, Spokes(start, end, centre, a), end[a.normal] - start[a.normal], plane, direction,
+                       five_axis, tilted);
 }
 
 // Hands out the next piece and its kind: a chord is a @line (@line_5x), a smaller arc keeps the

@@ -31,7 +31,8 @@ struct ArcSettings {
   double eps_angle = 0.0;     // smaller sweeps become one line
   double zero_value = 0.0;    // a rise below this is not helical
   bool limits_defaulted = false;  // neither arc_max_angle nor arc_max_chord is in the PRP
-  bool work_out_every_arc = false;  // tests: no arc_surely_passes() shortcut (same results, slower)
+  bool work_out_every_arc = false;  // tests: no arc_surely_passes() shortcut, and the circle check with
+                                    // hypot only (same results, slower)
   // How far apart the start's and the end's distances from the centre (and the stream's radius)
   // may be: 0.005 mm, or 0.0002 inch for an inch job (growing by 1e-4 of the radius).
   double circle_tolerance = 0.005;
@@ -57,9 +58,6 @@ public:
 private:
   struct Fields;  // what the filter reads of a command, found in one pass
   void plan(const toolpath::Command& arc, CommandKind kind, const Fields& f);
-  void check_circle(const toolpath::Command& arc, const Eigen::Vector3d& start, const Eigen::Vector3d& end,
-                    const Eigen::Vector3d& centre, const toolpath::geometry::PlaneAxes& a,
-                    std::optional<double> radius) const;
   void emit(toolpath::Command& out, CommandKind& kind);
   void follow(const toolpath::Command& out, CommandKind kind, const Fields& f);
 

@@ -80,4 +80,10 @@ CommandKind command_kind(std::string_view name) {
   }
 }
 
+CommandKind KindMemo::learn(std::string_view name, std::uint64_t head, std::uint64_t tail) {
+  Entry& e = entries_[name.size() % 8];
+  e = {head, tail, name.size(), command_kind(name)};
+  return e.kind;
+}
+
 }  // namespace prp

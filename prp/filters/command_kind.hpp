@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "toolpath/command.hpp"
+#include "toolpath/short_text.hpp"
 
 namespace prp {
 
@@ -40,6 +41,32 @@ enum class CommandKind : std::uint8_t {
 // The kind of a command name (with its '@'); CommandKind::other for any other name.
 CommandKind command_kind(std::string_view name);
 inline CommandKind command_kind(const toolpath::Command& c) { return command_kind(c.name); }
+
+// command_kind() of the names seen last, by their exact bytes: a stream repeats a handful of names,
+// and comparing a name with the one remembered for its length costs a third of hashing it.
+class KindMemo {
+public:
+  // A name of up to 16 bytes is wholly in (head, tail, size); a longer one is classified in full.
+  CommandKind operator()(std::string_view name) {
+    const std::size_t n = name.size();
+    if (n == 0 || n > 16) return command_kind(name);
+    const std::uint64_t head = toolpath::load_word(name, 0, n < 8 ? n : 8);
+    const std::uint64_t tail = n > 8 ? toolpath::load_word(name, n - 8, 8) : 0;
+    const Entry& e = entries_[n % 8];
+    if (e.size == n && e.head == head && e.tail == tail) return e.kind;
+    return learn(name, head, tail);
+  }
+
+private:
+  CommandKind learn(std::string_view name, std::uint64_t head, std::uint64_t tail);  // out of line: rare
+
+  struct Entry {
+    std::uint64_t head = 0, tail = 0;  // the name's first and last eight bytes (size 0: empty)
+    std::size_t size = 0;
+    CommandKind kind = CommandKind::other;
+  };
+  Entry entries_[8];  // by the name's length, modulo 8
+};
 
 // Groups of kinds, as bits.
 using KindSet = std::uint64_t;

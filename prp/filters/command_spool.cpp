@@ -198,17 +198,12 @@ const char* CommandSpool::record_at(std::int64_t offset, std::uint32_t& size) {
 void CommandSpool::shape(std::vector<toolpath::Parameter>& parameters, std::size_t n) {
   const std::size_t had = parameters.size();
   if (had == n) return;
-  if (n < spare_.size() && had < spare_.size() && spare_[had].size() < kSpares) {
-    auto& to = spare_[had];
-    auto& from = spare_[n];
-    if (to.capacity() == 0) to.reserve(kSpares);  // once per length
-    to.emplace_back().swap(parameters);
-    if (from.empty()) {
-      parameters.resize(n);
-    } else {
-      parameters.swap(from.back());
-      from.pop_back();  // an empty list: nothing to free
-    }
+  if (n < spare_.size() && had < spare_.size() && spare_[had].count < kSpares) {
+    Spares& to = spare_[had];
+    Spares& from = spare_[n];
+    to.lists[to.count++].swap(parameters);  // `parameters` is now an empty list
+    if (from.count == 0) parameters.resize(n);
+    else parameters.swap(from.lists[--from.count]);
     return;
   }
   parameters.resize(n);

@@ -59,9 +59,13 @@ private:
   // Parameter lists of earlier reads, by their length (up to 31). A read trades its destination's
   // list for a spare one of the right length instead of making or destroying parameters (short and
   // long commands alternate), and the spare's slots mostly hold the same names already. At most
-  // kSpares lists per length: memory stays bounded.
+  // kSpares lists per length, in fixed slots (a trade is two swaps): memory stays bounded.
   static constexpr std::size_t kSpares = 8;
-  std::array<std::vector<std::vector<toolpath::Parameter>>, 32> spare_;
+  struct Spares {
+    std::array<std::vector<toolpath::Parameter>, kSpares> lists;
+    std::size_t count = 0;  // lists[0 .. count) are spares; the others are empty
+  };
+  std::array<Spares, 32> spare_;
 };
 
 }  // namespace prp

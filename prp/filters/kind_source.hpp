@@ -34,13 +34,14 @@ public:
   bool next(toolpath::Command& out, CommandKind& kind) {
     if (kinded_) return kinded_->next_with_kind(out, kind);
     if (!source_.next(out)) return false;
-    kind = command_kind(out);
+    kind = memo_(out.name);
     return true;
   }
 
 private:
   toolpath::CommandSource& source_;
   KindSource* kinded_;
+  KindMemo memo_;
 };
 
 }  // namespace prp

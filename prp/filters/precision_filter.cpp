@@ -23,14 +23,6 @@ constexpr ParamKey kKeys[] = {ParamKey::xpos,          ParamKey::ypos,          
                               ParamKey::spin};
 constexpr int kFeed = 14, kSpin = 15;
 
-// Which of kKeys a parameter is, or -1: every parameter of every command is looked up.
-constexpr auto kIndex = [] {
-  KeyTable<std::int8_t> t{};
-  t.fill(-1);
-  for (int k = 0; k < static_cast<int>(std::size(kKeys)); ++k) at(t, kKeys[k]) = static_cast<std::int8_t>(k);
-  return t;
-}();
-
 std::optional<DecimalGrid> grid_of(const std::optional<int>& digits) {
   if (!digits) return std::nullopt;
   return DecimalGrid(*digits);
@@ -90,37 +82,50 @@ PrecisionFilter::PrecisionFilter(toolpath::CommandSource& input, PrecisionSettin
       s_(settings),
       movement_(grid_of(s_.movement_digits)),
       feed_(grid_of(s_.feed_digits)),
-      spin_(grid_of(s_.spin_digits)) {
+      spin_(grid_of(s_.spin_digits)),
+      whole_stays_(!s_.every_value_in_full && s_.zero_value <= 1.0) {
+  index_.fill(-1);
   for (int k = 0; k < static_cast<int>(std::size(kKeys)); ++k) {
     zero_of_[k] = k < kFeed ? s_.zero_value : 0.0;
     const auto& grid = k < kFeed ? movement_ : k == kFeed ? feed_ : spin_;
     grid_of_[k] = grid ? &*grid : nullptr;
+    // adjust() changes nothing, and follows no axis, for a parameter that neither snaps nor rounds.
+    if (zero_of_[k] > 0 || grid_of_[k]) index_[static_cast<std::size_t>(kKeys[k])] = static_cast<std::int8_t>(k);
+    whole_limit_of_[k] = whole_stays_ && grid_of_[k] ? grid_of_[k]->whole_limit() : -1.0;
   }
   for (double& axis : sent_) axis = std::numeric_limits<double>::quiet_NaN();
 }
 
+// True when adjust() would leave x as it is. Each test is false for zero_value <= 0 and for an
+// unknown (NaN) axis, as adjust() would skip them.
+inline bool PrecisionFilter::leaves(double x, int k, bool axis) const {
+  // A whole number is at least 1 from 0, so it snaps to 0 only for a zero_value above 1.
+  if (!DecimalGrid::whole_within(x, whole_limit_of_[k])) {
+    if (s_.every_value_in_full || (std::abs(x) < zero_of_[k] && x != 0.0)) return false;
+    // With whole_stays_, x is known to be off the grid's whole-number shortcut.
+    const DecimalGrid* grid = grid_of_[k];
+    if (grid && !(whole_stays_ ? grid->round_general(x) == x : grid->keeps(x))) return false;
+  }
+  return !(axis && std::abs(x - sent_[k]) < s_.zero_value && x != sent_[k]);
+}
+
 // One pass over the parameters. Most values are already at the precision and far from zero and
-// from the axis they move on: telling that takes a few comparisons and one rounding, and such a
-// value is left as it is; any other goes through adjust(), the steps as spec 3.1 orders them.
+// from the axis they move on: telling that takes a few comparisons and at most one rounding, and
+// such a value is left as it is; any other goes through adjust(), the steps as spec 3.1 orders them.
 bool PrecisionFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
   if (!input_.next(out, kind)) return false;
   if (!out.is_stream_command()) return true;
-  const bool moves = has(kMovesTool, kind);
+  const int axes = has(kMovesTool, kind) ? 3 : 0;  // parameters below this are axes the tool moves on
   unsigned seen = 0;  // a name given twice: only its first occurrence counts, as with Command::find
   for (toolpath::Parameter& p : out.parameters) {
-    const int k = at(kIndex, p.key);
+    const int k = index_[static_cast<std::size_t>(p.key)];
     if (k < 0 || (seen & (1u << k))) continue;
     seen |= 1u << k;
     toolpath::Value& v = p.value;
     if (!is_number(v)) continue;
     const double x = number_of(v);
-    const bool axis = moves && k < 3;
-    // Each test is false for zero_value <= 0 and for an unknown (NaN) axis, as adjust() would skip them.
-    const bool in_full = s_.every_value_in_full || (std::abs(x) < zero_of_[k] && x != 0.0) ||
-                         (axis && std::abs(x - sent_[k]) < s_.zero_value && x != sent_[k]);
-    const bool leave = !in_full && (!grid_of_[k] || grid_of_[k]->keeps(x));
-    if (!leave) adjust(v, k, moves);
-    else if (axis) sent_[k] = x;
+    if (!leaves(x, k, k < axes)) adjust(v, k, axes != 0);
+    else if (k < axes) sent_[k] = x;
   }
   return true;
 }

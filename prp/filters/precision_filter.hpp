@@ -3,6 +3,7 @@
 // value; coordinates, feeds and spindle speeds are rounded to the PRP's digits.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -36,14 +37,18 @@ class DecimalGrid {
 public:
   explicit DecimalGrid(int digits);
   double round(double v) const {
-    if (std::abs(v) <= whole_limit_ && static_cast<double>(static_cast<std::int64_t>(v)) == v) return v == 0.0 ? 0.0 : v;
+    if (on_whole_shortcut(v)) return v == 0.0 ? 0.0 : v;
     return round_general(v);
   }
   double round_general(double v) const;  // the rule as written
   // round(v) == v (so also for -0, which rounds to +0), without the -0 step for whole numbers.
-  bool keeps(double v) const {
-    if (std::abs(v) <= whole_limit_ && static_cast<double>(static_cast<std::int64_t>(v)) == v) return true;
-    return round_general(v) == v;
+  bool keeps(double v) const { return on_whole_shortcut(v) || round_general(v) == v; }
+  // A whole number within the shortcut's range: round(v) is v (+0 for -0).
+  bool on_whole_shortcut(double v) const { return whole_within(v, whole_limit_); }
+  double whole_limit() const { return whole_limit_; }
+  // v is a whole number and |v| <= limit (a limit below 0: never); the cast is only made in range.
+  static bool whole_within(double v, double limit) {
+    return std::abs(v) <= limit && static_cast<double>(static_cast<std::int64_t>(v)) == v;
   }
 
 private:
@@ -57,15 +62,22 @@ public:
   bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
 private:
+  bool leaves(double x, int k, bool axis) const;
   void adjust(toolpath::Value& v, int k, bool moves);  // the steps of spec 3.1, one by one
 
   KindedInput input_;
   PrecisionSettings s_;
   std::optional<DecimalGrid> movement_, feed_, spin_;
-  // Per parameter of the filter's list: the zero_value it snaps with (0 for the feed and the
-  // spindle speed: never), and its grid (null: no rounding).
+  // Which of the filter's parameters a key is (-1: a parameter the settings leave alone, such as
+  // the feed without feed_precision), then per parameter the zero_value it snaps with (0 for the
+  // feed and the spindle speed: never), and its grid (null: no rounding).
+  std::array<std::int8_t, toolpath::param_key_count + 1> index_;
   double zero_of_[16];
   const DecimalGrid* grid_of_[16];
+  // A whole number on its grid never snaps (zero_value <= 1), nor rounds: per parameter the largest
+  // such number its grid's shortcut takes, or -1 (no grid, zero_value above 1, every value in full).
+  bool whole_stays_;
+  double whole_limit_of_[16];
   double sent_[3];  // where the tool is sent, axis by axis; NaN while unknown (it never snaps to it)
 };
 

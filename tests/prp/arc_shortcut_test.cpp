@@ -1,5 +1,6 @@
-// The arc filter's shortcut (arc_surely_passes: an arc that surely passes unchanged is not worked
-// out) must never change a result: over a table of arcs close to every limit (sweeps near 0,
+// The arc filter's shortcuts must never change a result. The circle check tells most arcs from
+// square roots instead of hypot; arc_surely_passes: an arc that surely passes unchanged is not worked
+// out: over a table of arcs close to every limit (sweeps near 0,
 // eps_angle, 90, 180 and 360 degrees, radii near arc_max_radius, lengths near arc_min_length,
 // rises near zero_value) and PRP switches, the filter gives the same commands with and without it,
 // and every arc the shortcut passes is one the full rule passes unchanged.
@@ -163,6 +164,51 @@ TEST(ArcShortcut, RefusesWhatItCannotBound) {
   s = ArcSettings{};
   s.main_planes = true;
   EXPECT_FALSE(prp::arc_surely_passes(s, start, Eigen::Vector3d(0, 1, 0), c, Plane::XY, Direction::CCW, false, true));
+}
+
+// The circle check's shortcut passes only arcs that the check with hypot passes: over arcs whose
+// end (and given radius) lie at, inside and outside the tolerance by tiny and large amounts, with
+// radii near 1e-6, huge coordinates and NaN, the filter throws the same error, or gives the same
+// commands, with and without it.
+TEST(ArcShortcut, CircleCheckDecidesAsHypot) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const double factors[] = {0, 0.5, -0.5, 1 - 1e-9, -(1 - 1e-9), 1 - 1e-13, 1, -1, 1 + 1e-13, 1 + 1e-9, 2, -2};
+  int passed = 0, refused = 0;
+  for (int i = 0; i < 20000; ++i) {
+    double r = std::pow(10.0, -7 + 16 * unit(rng));
+    if (i % 10 == 0) r = 1e-6 * (1 + (static_cast<double>(rng() % 5) - 2) * 1e-13);
+    const double ct = i % 3 ? 0.005 : 0.0002;
+    const double tolerance = ct * (1 + 1e-4 * r);
+    const double end_r = r + tolerance * factors[rng() % std::size(factors)];
+    const double from = 2 * std::numbers::pi * unit(rng), to = 2 * std::numbers::pi * unit(rng);
+    Eigen::Vector3d centre(-100 + 200 * unit(rng), -100 + 200 * unit(rng), 1.5);
+    if (i % 50 == 0) centre *= 1e60;
+    if (i % 997 == 0) centre.x() = std::nan("");
+    const Eigen::Vector3d start = centre + Eigen::Vector3d(r * std::cos(from), r * std::sin(from), 0);
+    const Eigen::Vector3d end = centre + Eigen::Vector3d(end_r * std::cos(to), end_r * std::sin(to), 0);
+    TestArc t{Plane::XY, rng() % 2 ? Direction::CW : Direction::CCW, start, end, centre};
+    auto in = commands(t);
+    if (rng() % 2) in[1].set("radius", num(r + tolerance * factors[rng() % std::size(factors)]));
+    ArcSettings fast;
+    fast.circle_tolerance = ct;
+    ArcSettings hypot_only = fast;
+    hypot_only.work_out_every_arc = true;
+    auto outcome = [&](const ArcSettings& s) {
+      try {
+        auto out = run_arc_filter(in, s);
+        return std::pair{std::string(), out};
+      } catch (const prp::StreamError& e) {
+        return std::pair{std::string(e.what()), std::vector<Command>{}};
+      }
+    };
+    const auto expected = outcome(hypot_only), got = outcome(fast);
+    ASSERT_EQ(got.first, expected.first) << i;
+    if (i % 997 != 0) ASSERT_EQ(got.second, expected.second) << i;  // NaN is equal to nothing
+    ++(expected.first.empty() ? passed : refused);
+  }
+  EXPECT_GT(passed, 5000);
+  EXPECT_GT(refused, 5000);
 }
 
 }  // namespace

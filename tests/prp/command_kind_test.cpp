@@ -4,6 +4,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -50,6 +51,25 @@ TEST(CommandKind, NearMissesAreOther) {
   for (const char* other : {"", "@", "line", "@lin", "@lines", "@arc5x", "@start_of_jobs", "@end_of_fil",
                             "@change_tool2", "@ltne", "@move4x_polaR2", "@tool_path_infO_", "@\xc3\xa9line"})
     EXPECT_EQ(command_kind(other), CommandKind::other) << other;
+}
+
+// KindMemo remembers a kind per name length: over random sequences of names (every kind in three
+// cases, near misses of the same length, long names, the empty name) it answers as command_kind().
+TEST(CommandKind, MemoAnswersAsCommandKind) {
+  std::vector<std::string> names;
+  for (const auto& [name, kind] : kKinds) {
+    const std::string n = name;
+    names.insert(names.end(), {n, upper(n), n.substr(0, n.size() - 1) + "#", "#" + n.substr(1)});
+  }
+  names.insert(names.end(), {"", "@", "@x", "@ltne", "@lin3", "@arc_5y", "@start_of_jobs_and_more", "@tool_path_info",
+                             "@tool_path_infO", "@tool_path_infp", "@\xc3\xa9line"});
+  std::mt19937_64 rng(5);
+  KindMemo memo;
+  for (int i = 0; i < 20000; ++i) {
+    // Mostly a few names over and over, as in a stream; now and then any name.
+    const std::string& name = names[rng() % (i % 7 == 0 ? names.size() : 8)];  // @rapid_move, @line
+    ASSERT_EQ(memo(name), command_kind(name)) << name;
+  }
 }
 
 TEST(CommandKind, Groups) {

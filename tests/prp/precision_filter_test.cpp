@@ -129,7 +129,8 @@ TEST(PrecisionFilter, ShortcutGivesTheFullStepsResults) {
   const char* commands[] = {"@line", "@rapid_move", "@arc", "@start_program", "@drill", "@message"};
   for (int round = 0; round < 200; ++round) {
     prp::PrecisionSettings s;
-    s.zero_value = pick(0.0, 0.001, 0.001, 0.5, 2.0, -1.0);
+    // Up to 1 a whole number never snaps (the shortcut takes it), above 1 it may.
+    s.zero_value = pick(0.0, 0.001, 0.001, 0.5, 1.0, 1.5, 2.0, -1.0);
     if (rng() % 4) s.movement_digits = static_cast<int>(pick(3, 3, 0, 1, 4, 16, -1));
     if (rng() % 2) s.feed_digits = static_cast<int>(pick(0, 1, 2, -2));
     if (rng() % 2) s.spin_digits = static_cast<int>(pick(0, -2, 3));
@@ -147,7 +148,10 @@ TEST(PrecisionFilter, ShortcutGivesTheFullStepsResults) {
           case 1: v = pick(0.0, -0.0, 0.0004, -0.0004, 0.0005, 0.001, 1e-300, 0.49, -1.5); break;
           case 2: v = static_cast<double>(static_cast<std::int64_t>(rng() % 20000) - 10000) / 1000.0; break;
           case 3: v = std::ldexp(static_cast<double>(rng() >> 11), -static_cast<int>(rng() % 60)); break;
-          case 4: v = pick(std::nan(""), std::numeric_limits<double>::infinity(), -1e300, 2.5, 1234.5678); break;
+          case 4:
+            v = pick(std::nan(""), std::numeric_limits<double>::infinity(), -1e300, 2.5, 1234.5678, 1e16,
+                     9007199254740993.0, -4503599627370497.0, around + 1.0, around - 2.0);
+            break;
           default: v = static_cast<double>(static_cast<std::int64_t>(rng() % 2000) - 1000); break;
         }
         toolpath::Value value;
