@@ -201,6 +201,7 @@ void TraceWriter::flush() {
 std::size_t write_trace(CommandSource& source, std::ostream& out) {
   TraceWriter writer(out);
   Command command;
+  command.keep_name_on_heap();  // sources hand commands over by swapping with it
   std::size_t count = 0;
   while (source.next(command)) {
     writer.write(command);

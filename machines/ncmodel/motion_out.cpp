@@ -30,7 +30,7 @@ void MotionOut::finish_command() {
 
 void MotionOut::add(std::string_view name) {
   finish_command();
-  if (tail_ == queue_.size()) queue_.emplace_back();
+  if (tail_ == queue_.size()) queue_.emplace_back().keep_name_on_heap();  // take() swaps it with the consumer's
   Command& c = queue_[tail_++];
   shelf_.rename(c, name);
   c.index = made_++;  // numbered in stream order, from 0
