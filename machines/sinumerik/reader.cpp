@@ -790,6 +790,17 @@ struct SinumerikReader::Impl {
     }
   }
 
+  // A program's first line may be its punched-tape header: `%` in the first column, then the file
+  // name (`%_N_MAIN_MPF`, `%Flange3_MPF`) or nothing; the control reads it as the file's name, not
+  // as a block. True when `line` is one (then it is skipped); a `%` anywhere else is an error.
+  static bool is_tape_header(std::string_view line) {
+    if (line.empty() || line[0] != '%') return false;
+    std::size_t i = 1;
+    while (i < line.size() && ident_char(line[i])) ++i;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    return i == line.size();
+  }
+
   // The label a line starts with (after its block number), upper case; empty when none.
   static std::string label_of(std::string_view line) {
     std::size_t i = 0;
@@ -823,6 +834,7 @@ struct SinumerikReader::Impl {
       Source& s = stack.back();
       const std::size_t depth = stack.size();
       main_line = depth == 1 ? current_line : 0;
+      if (current_line == 1 && is_tape_header(raw)) continue;
       std::string_view text = strip_comment(raw);
       // The block number, then a label (registered where it stands, for GOTOB).
       Cursor c{text};
