@@ -13,15 +13,19 @@ using toolpath::Command;
 using toolpath::Value;
 using K = toolpath::ParamKey;
 
-namespace {
-
-// Rounds to a nanometre, -0 to 0: printed values short and stable.
 double clean(double v) {
-  const double r = std::round(v * 1e9) / 1e9;
+  const double scaled = v * 1e9;
+  double r;
+  if (std::abs(scaled) < 0x1p51) {
+    constexpr double kShift = 6755399441055744.0;  // 1.5 * 2^52: adding it rounds to an integer, halves to even
+    r = (scaled + kShift) - kShift;
+    if (std::abs(scaled - r) == 0.5) r = scaled + std::copysign(0.5, scaled);  // a half: away from zero (exact here)
+  } else {
+    r = std::round(scaled);
+  }
+  r /= 1e9;
   return r == 0 ? 0.0 : r;
 }
-
-}  // namespace
 
 void MotionOut::finish_command() {
   if (current_) current_->parameters.resize(fill_);

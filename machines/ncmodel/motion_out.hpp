@@ -21,6 +21,10 @@
 
 namespace ncmodel {
 
+// Rounds to a nanometre, halves away from zero (as std::round), and -0 to 0: the values the
+// commands carry, short and stable when printed. Without a libm call for every value.
+double clean(double v);
+
 class MotionOut {
 public:
   bool empty() const { return head_ == tail_; }
