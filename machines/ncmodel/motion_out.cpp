@@ -46,10 +46,15 @@ void MotionOut::add(std::string_view name) {
 }
 
 // As Command::set on a cleared command: the parameters of a command are all different, so
-// filling slots in order gives the same parameters in the same order.
-Value& MotionOut::slot(K key, toolpath::ValueKind kind) {
+// filling slots in order gives the same parameters in the same order. Inline (every value of every
+// command comes here; the callers are all in this file), the vector's growth out of line.
+[[gnu::noinline]] toolpath::Parameter& MotionOut::new_slot() { return current_->parameters.emplace_back(); }
+
+[[gnu::always_inline]] inline Value& MotionOut::slot(K key, toolpath::ValueKind kind) {
   auto& params = current_->parameters;
-  toolpath::Parameter& p = fill_ < params.size() ? params[fill_] : params.emplace_back();
+  // fill_ never passes the size: comparing pointers spares dividing by a Parameter's size.
+  const auto at = params.begin() + static_cast<std::ptrdiff_t>(fill_);
+  toolpath::Parameter& p = at != params.end() ? *at : new_slot();
   ++fill_;
   p.rename(key);
   p.line = p.column = 0;
@@ -58,7 +63,9 @@ Value& MotionOut::slot(K key, toolpath::ValueKind kind) {
   return p.value;
 }
 
-void MotionOut::number(K key, double v) { slot(key, toolpath::ValueKind::Numeric).numeric = clean(v); }
+[[gnu::always_inline]] inline void MotionOut::number(K key, double v) {
+  slot(key, toolpath::ValueKind::Numeric).numeric = clean(v);
+}
 void MotionOut::word(K key, std::string_view w) { slot(key, toolpath::ValueKind::Enum).text.assign(w); }
 
 bool MotionOut::take(Command& out) {
