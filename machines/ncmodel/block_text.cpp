@@ -49,34 +49,16 @@ namespace {
 
 constexpr double kTens[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
 
-// The usual number by loops of its own: [-]digits[.digits] with one to fifteen digits, not followed
-// by another digit or point. Its value (the digits as an integer over a power of ten: both exact
-// doubles, so the quotient is correctly rounded) and its end; false for anything else.
+// The usual number: [-]digits[.digits] with one to fifteen digits, not followed by another point.
+// Its value (the digits as an integer over a power of ten: both exact doubles, so the quotient is
+// correctly rounded) and its end; false for anything else.
 bool plain_number(const char* p, std::size_t i, std::size_t n, double& value, std::size_t& end) {
-  const bool negative = i < n && p[i] == '-';
-  i += negative;
-  const std::size_t first = i;
-  std::uint64_t mantissa = 0;
-  unsigned d = 0;
-  while (i < n && (d = static_cast<unsigned char>(p[i]) - unsigned{'0'}) <= 9) {
-    mantissa = mantissa * 10 + d;
-    ++i;
-  }
-  std::size_t digits = i - first, decimals = 0;
-  if (i < n && p[i] == '.') {
-    const std::size_t point = ++i;
-    while (i < n && (d = static_cast<unsigned char>(p[i]) - unsigned{'0'}) <= 9) {
-      mantissa = mantissa * 10 + d;
-      ++i;
-    }
-    decimals = i - point;
-    digits += decimals;
-    if (i < n && p[i] == '.') return false;  // a second point: malformed, said by the general loop
-  }
-  if (digits == 0 || digits > 15) return false;
-  const double v = static_cast<double>(mantissa) / kTens[decimals];
-  value = negative ? -v : v;
-  end = i;
+  const PlainDecimal d = read_plain_decimal(p + i, p + n);
+  if (d.digits() - 1 >= 15) return false;  // none (wraps around) or more than fifteen
+  if (d.end != p + n && *d.end == '.') return false;  // a second point: malformed, said by the general loop
+  const double v = static_cast<double>(d.mantissa) / kTens[d.decimals];
+  value = d.negative ? -v : v;
+  end = static_cast<std::size_t>(d.end - p);
   return true;
 }
 

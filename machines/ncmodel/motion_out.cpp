@@ -52,7 +52,7 @@ void MotionOut::add(std::string_view name) {
 
 [[gnu::always_inline]] inline Value& MotionOut::slot(K key, toolpath::ValueKind kind) {
   auto& params = current_->parameters;
-  // fill_ never passes the size: comparing pointers spares dividing by a Parameter's size.
+  // fill_ never passes the size: comparing iterators spares dividing by a Parameter's size.
   const auto at = params.begin() + static_cast<std::ptrdiff_t>(fill_);
   toolpath::Parameter& p = at != params.end() ? *at : new_slot();
   ++fill_;

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <string>
 
+#include "machines/ncmodel/block_text.hpp"
+
 namespace pikocnc {
 namespace {
 
@@ -197,29 +199,11 @@ bool lex_common_line(std::string_view s, Block& out) {
     }
     if (static_cast<unsigned>((c | 0x20) - 'a') >= 26) return false;
     const auto column = static_cast<std::uint32_t>(p - begin + 1);
-    ++p;
-    const bool negative = p != end && *p == '-';
-    p += negative;
-    // The digits, as one integer; how many there are before and after the point.
-    const char* const first = p;
-    std::uint64_t mantissa = 0;
-    unsigned d = 0;
-    while (p != end && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) {
-      mantissa = mantissa * 10 + d;
-      ++p;
-    }
-    const std::uint64_t int_part = mantissa;
-    const auto int_digits = p - first;
-    long frac_digits = 0;
-    if (p != end && *p == '.') {
-      const char* const point = ++p;
-      while (p != end && (d = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) {
-        mantissa = mantissa * 10 + d;
-        ++p;
-      }
-      frac_digits = p - point;
-    }
-    const auto digits = int_digits + frac_digits;
+    const ncmodel::PlainDecimal number = ncmodel::read_plain_decimal(p + 1, end);
+    p = number.end;
+    const bool negative = number.negative;
+    const std::uint64_t mantissa = number.mantissa, int_part = number.int_part;
+    const std::size_t digits = number.digits(), frac_digits = number.decimals;
     if (digits == 0 || digits > 15) return false;  // no number, or one from_chars must round
     // Blanks, then a letter or the end: more digits after blanks belong to this number.
     while (p != end && class_of(*p) == kBlank) ++p;
