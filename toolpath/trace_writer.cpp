@@ -51,8 +51,7 @@ static_assert(kArrowColumn + 5 <= kHeadRoom);
 }
 
 char* put_flag(char* p, ChangeFlag flag) {
-  if (flag == ChangeFlag::Changed) *p++ = 'T';
-  if (flag == ChangeFlag::Unchanged) *p++ = 'F';
+  if (flag != ChangeFlag::None) *p++ = flag == ChangeFlag::Changed ? 'T' : 'F';  // one test for most values
   return p;
 }
 
@@ -123,7 +122,8 @@ std::size_t command_room(const Command& command) {
 char* put_command(char* p, const Command& command, NumberCache* cache) {
   char* line_start = p;
   *p++ = '(';
-  p = std::to_chars(p, p + kNumberRoom, command.depth).ptr;
+  if (command.depth >= 0 && command.depth <= 9) *p++ = static_cast<char>('0' + command.depth);  // nearly every command
+  else p = std::to_chars(p, p + kNumberRoom, command.depth).ptr;
   *p++ = ')';
   p = put_text(p, command.name);
   // Long names are written whole, followed by a blank, rather than cut as SolidCAM does: the
