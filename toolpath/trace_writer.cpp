@@ -51,8 +51,7 @@ static_assert(kArrowColumn + 5 <= kHeadRoom);
 }
 
 char* put_flag(char* p, ChangeFlag flag) {
-  if (flag == ChangeFlag::Changed) *p++ = 'T';
-  if (flag == ChangeFlag::Unchanged) *p++ = 'F';
+  if (flag != ChangeFlag::None) *p++ = flag == ChangeFlag::Changed ? 'T' : 'F';  // one test for most values
   return p;
 }
 
@@ -75,7 +74,8 @@ char* put_flag(char* p, ChangeFlag flag) {
   return end;
 }
 
-// The most bytes put_value writes for `value` (and may touch past its text).
+// The most bytes put_value writes for `value` (and may touch past its text). kNumberRoom + 2 and
+// its text's size bound it whatever its kind (command_room).
 std::size_t value_room(const Value& value) {
   switch (value.kind) {
     case ValueKind::Integer:
@@ -105,12 +105,15 @@ std::size_t value_room(const Value& value) {
   return p;
 }
 
-// The most bytes put_command writes for `command`: every piece at its largest, and a continuation
-// line's head before every parameter (more than the wrapping ever starts). With this room known
-// once, the pieces are written through a plain pointer, without a check each.
+// At least the bytes put_command writes for `command`: every piece at its largest, and a
+// continuation line's head before every parameter (more than the wrapping ever starts). With this
+// room known once, the pieces are written through a plain pointer, without a check each. A value
+// is given the room of a number and of its text, whatever its kind (no branch on it; a recycled
+// numeric slot may keep an old text, which only makes the bound larger).
 std::size_t command_room(const Command& command) {
   std::size_t n = 2 + kNumberRoom + command.name.size() + kHeadRoom + 4;
-  for (const auto& p : command.parameters) n += kHeadRoom + 2 + p.name.size() + value_room(p.value);
+  n += command.parameters.size() * (kHeadRoom + 2 + kNumberRoom + 2);
+  for (const auto& p : command.parameters) n += p.name.size() + p.value.text.size();
   for (const auto& t : command.trace) n += kHeadRoom + t.text.size() + 1;
   return n;
 }
@@ -119,7 +122,8 @@ std::size_t command_room(const Command& command) {
 char* put_command(char* p, const Command& command, NumberCache* cache) {
   char* line_start = p;
   *p++ = '(';
-  p = std::to_chars(p, p + kNumberRoom, command.depth).ptr;
+  if (command.depth >= 0 && command.depth <= 9) *p++ = static_cast<char>('0' + command.depth);  // nearly every command
+  else p = std::to_chars(p, p + kNumberRoom, command.depth).ptr;
   *p++ = ')';
   p = put_text(p, command.name);
   // Long names are written whole, followed by a blank, rather than cut as SolidCAM does: the
@@ -201,6 +205,7 @@ void TraceWriter::flush() {
 std::size_t write_trace(CommandSource& source, std::ostream& out) {
   TraceWriter writer(out);
   Command command;
+  command.keep_name_on_heap();  // sources hand commands over by swapping with it
   std::size_t count = 0;
   while (source.next(command)) {
     writer.write(command);

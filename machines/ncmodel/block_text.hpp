@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -19,6 +20,44 @@ struct BlockError {
 inline bool is_letter(char c) { return (c | 0x20) >= 'a' && (c | 0x20) <= 'z'; }
 inline bool ident_start(char c) { return is_letter(c) || c == '_'; }
 inline bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9'); }
+
+// A plain decimal `[-]digits[.digits]` at [p, end), by loops of its own: the readers' shortcut for
+// the usual number (PikoCNC's lexer, Cursor::number). Only the sign, the digits and one point are
+// read; what follows (and whether the number is usable) is the caller's to judge.
+struct PlainDecimal {
+  const char* end;            // after the last digit or the point
+  std::uint64_t mantissa;     // every digit, as one integer (callers take at most fifteen digits)
+  std::uint64_t int_part;     // the digits before the point
+  std::size_t int_digits, decimals;
+  bool negative;
+  std::size_t digits() const { return int_digits + decimals; }
+};
+
+inline PlainDecimal read_plain_decimal(const char* p, const char* end) {
+  PlainDecimal d{};
+  d.negative = p != end && *p == '-';
+  p += d.negative;
+  const char* const first = p;
+  std::uint64_t mantissa = 0;
+  unsigned digit = 0;
+  while (p != end && (digit = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) {
+    mantissa = mantissa * 10 + digit;
+    ++p;
+  }
+  d.int_part = mantissa;
+  d.int_digits = static_cast<std::size_t>(p - first);
+  if (p != end && *p == '.') {
+    const char* const point = ++p;
+    while (p != end && (digit = static_cast<unsigned char>(*p) - unsigned{'0'}) <= 9) {
+      mantissa = mantissa * 10 + digit;
+      ++p;
+    }
+    d.decimals = static_cast<std::size_t>(p - point);
+  }
+  d.mantissa = mantissa;
+  d.end = p;
+  return d;
+}
 
 struct Cursor {
   std::string_view text;

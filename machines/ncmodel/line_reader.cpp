@@ -1,5 +1,6 @@
 #include "machines/ncmodel/line_reader.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "toolpath/error.hpp"
@@ -14,15 +15,21 @@ constexpr std::size_t kMaxLine = std::size_t{16} << 20;
 bool LineReader::fill() {
   if (at_eof_) return false;
   if (pos_ > 0) {  // drop consumed bytes so the buffer never grows with the file
-    buffer_.erase(0, pos_);
+    std::memmove(buffer_.get(), buffer_.get() + pos_, size_ - pos_);
+    size_ -= pos_;
     buffer_start_ += pos_;
     pos_ = 0;
   }
-  const std::size_t old = buffer_.size();
-  buffer_.resize(old + kChunk);
-  in_.read(buffer_.data() + old, static_cast<std::streamsize>(kChunk));
+  if (capacity_ - size_ < kChunk) {  // a line longer than the chunks so far (or the first fill)
+    const std::size_t capacity = std::max(2 * capacity_, size_ + kChunk);
+    auto bigger = std::make_unique_for_overwrite<char[]>(capacity);
+    if (size_ > 0) std::memcpy(bigger.get(), buffer_.get(), size_);
+    buffer_ = std::move(bigger);
+    capacity_ = capacity;
+  }
+  in_.read(buffer_.get() + size_, static_cast<std::streamsize>(kChunk));
   const auto got = static_cast<std::size_t>(in_.gcount());
-  buffer_.resize(old + got);
+  size_ += got;
   if (got < kChunk) at_eof_ = true;
   return got > 0;
 }
@@ -30,8 +37,8 @@ bool LineReader::fill() {
 bool LineReader::next(std::string_view& line) {
   std::size_t scan = pos_;
   for (;;) {
-    const char* base = buffer_.data();
-    const std::size_t size = buffer_.size();
+    const char* base = buffer_.get();
+    const std::size_t size = size_;
     std::size_t end = scan;
     while (end < size && base[end] != '\n' && base[end] != '\r') {
       const void* nl = std::memchr(base + end, '\n', size - end);
@@ -44,7 +51,7 @@ bool LineReader::next(std::string_view& line) {
       const std::size_t consumed = scan - pos_;
       if (end - pos_ > kMaxLine)  // a binary file or a generator gone wrong: memory would grow without bound
         throw toolpath::InputError({file_, line_ + 1, 1}, "line longer than 16 MiB: not a G-code program?");
-      if (!fill() && buffer_.size() == pos_) return false;
+      if (!fill() && size_ == pos_) return false;
       scan = pos_ + consumed;
       continue;
     }
@@ -59,12 +66,12 @@ bool LineReader::next(std::string_view& line) {
 }
 
 void LineReader::seek(const Mark& where) {
-  if (where.offset >= buffer_start_ && where.offset <= buffer_start_ + buffer_.size()) {
+  if (where.offset >= buffer_start_ && where.offset <= buffer_start_ + size_) {
     pos_ = static_cast<std::size_t>(where.offset - buffer_start_);
   } else {
     in_.clear();
     in_.seekg(static_cast<std::streamoff>(where.offset));
-    buffer_.clear();
+    size_ = 0;
     buffer_start_ = where.offset;
     pos_ = 0;
     at_eof_ = false;

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <istream>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -33,7 +34,10 @@ private:
   bool fill();  // reads another chunk; false at the end of the stream
 
   std::istream& in_;
-  std::string buffer_;
+  // The bytes read and not dropped yet: size_ of capacity_. Not a std::string, whose resize would
+  // zero every chunk before it is read over (a 256 KiB memset a chunk).
+  std::unique_ptr<char[]> buffer_;
+  std::size_t size_ = 0, capacity_ = 0;
   std::string file_;
   std::uint64_t buffer_start_ = 0;  // file offset of buffer_[0]
   std::size_t pos_ = 0;

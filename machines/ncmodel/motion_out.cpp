@@ -13,15 +13,19 @@ using toolpath::Command;
 using toolpath::Value;
 using K = toolpath::ParamKey;
 
-namespace {
-
-// Rounds to a nanometre, -0 to 0: printed values short and stable.
 double clean(double v) {
-  const double r = std::round(v * 1e9) / 1e9;
+  const double scaled = v * 1e9;
+  double r;
+  if (std::abs(scaled) < 0x1p51) {
+    constexpr double kShift = 6755399441055744.0;  // 1.5 * 2^52: adding it rounds to an integer, halves to even
+    r = (scaled + kShift) - kShift;
+    if (std::abs(scaled - r) == 0.5) r = scaled + std::copysign(0.5, scaled);  // a half: away from zero (exact here)
+  } else {
+    r = std::round(scaled);
+  }
+  r /= 1e9;
   return r == 0 ? 0.0 : r;
 }
-
-}  // namespace
 
 void MotionOut::finish_command() {
   if (current_) current_->parameters.resize(fill_);
@@ -30,7 +34,7 @@ void MotionOut::finish_command() {
 
 void MotionOut::add(std::string_view name) {
   finish_command();
-  if (tail_ == queue_.size()) queue_.emplace_back();
+  if (tail_ == queue_.size()) queue_.emplace_back().keep_name_on_heap();  // take() swaps it with the consumer's
   Command& c = queue_[tail_++];
   shelf_.rename(c, name);
   c.index = made_++;  // numbered in stream order, from 0
@@ -42,10 +46,15 @@ void MotionOut::add(std::string_view name) {
 }
 
 // As Command::set on a cleared command: the parameters of a command are all different, so
-// filling slots in order gives the same parameters in the same order.
-Value& MotionOut::slot(K key, toolpath::ValueKind kind) {
+// filling slots in order gives the same parameters in the same order. Inline (every value of every
+// command comes here; the callers are all in this file), the vector's growth out of line.
+[[gnu::noinline]] toolpath::Parameter& MotionOut::new_slot() { return current_->parameters.emplace_back(); }
+
+[[gnu::always_inline]] inline Value& MotionOut::slot(K key, toolpath::ValueKind kind) {
   auto& params = current_->parameters;
-  toolpath::Parameter& p = fill_ < params.size() ? params[fill_] : params.emplace_back();
+  // fill_ never passes the size: comparing iterators spares dividing by a Parameter's size.
+  const auto at = params.begin() + static_cast<std::ptrdiff_t>(fill_);
+  toolpath::Parameter& p = at != params.end() ? *at : new_slot();
   ++fill_;
   p.rename(key);
   p.line = p.column = 0;
@@ -54,7 +63,9 @@ Value& MotionOut::slot(K key, toolpath::ValueKind kind) {
   return p.value;
 }
 
-void MotionOut::number(K key, double v) { slot(key, toolpath::ValueKind::Numeric).numeric = clean(v); }
+[[gnu::always_inline]] inline void MotionOut::number(K key, double v) {
+  slot(key, toolpath::ValueKind::Numeric).numeric = clean(v);
+}
 void MotionOut::word(K key, std::string_view w) { slot(key, toolpath::ValueKind::Enum).text.assign(w); }
 
 bool MotionOut::take(Command& out) {

@@ -21,6 +21,10 @@
 
 namespace ncmodel {
 
+// Rounds to a nanometre, halves away from zero (as std::round), and -0 to 0: the values the
+// commands carry, short and stable when printed. Without a libm call for every value.
+double clean(double v);
+
 class MotionOut {
 public:
   bool empty() const { return head_ == tail_; }
@@ -76,6 +80,7 @@ private:
   // into the slots a recycled command already has (mostly named so: no clearing, no lookup).
   void add(std::string_view name);
   toolpath::Value& slot(toolpath::ParamKey key, toolpath::ValueKind kind);
+  toolpath::Parameter& new_slot();
   void number(toolpath::ParamKey key, double v);
   void word(toolpath::ParamKey key, std::string_view w);
   void finish_command();  // cuts the command being filled to the parameters it was given

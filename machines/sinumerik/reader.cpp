@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <deque>
 #include <filesystem>
 #include <fstream>
@@ -108,6 +109,16 @@ struct Block {
   std::optional<Jump> jump;
   std::optional<std::size_t> p_column;  // a P word (repeats of the call)
   std::optional<double> p;
+
+  // Empties the block for the next line; the code lists keep their buffers (no allocation a line).
+  void clear() {
+    std::vector<double> keep_g = std::move(g), keep_m = std::move(m);
+    *this = Block{};
+    g = std::move(keep_g);
+    m = std::move(keep_m);
+    g.clear();
+    m.clear();
+  }
 };
 
 }  // namespace
@@ -139,6 +150,7 @@ struct SinumerikReader::Impl {
   bool warned_per_rev = false;
 
   bool in_memory = false;  // no folder: subprograms cannot be found
+  Block block_;            // the block being executed, reused line after line
 
   Impl(const std::string& path, Options o) : options(o) {
     fs::path p(path);
@@ -342,6 +354,12 @@ struct SinumerikReader::Impl {
 
   // ---------------------------------------------------------------- one block
   static std::string_view strip_comment(std::string_view line) {
+    if (line.empty()) return line;
+    // Without a text in quotes the comment starts at the first `;`: memchr, not a loop over every byte.
+    if (!std::memchr(line.data(), '"', line.size())) {
+      const void* semicolon = std::memchr(line.data(), ';', line.size());
+      return semicolon ? line.substr(0, static_cast<std::size_t>(static_cast<const char*>(semicolon) - line.data())) : line;
+    }
     bool quoted = false;
     for (std::size_t i = 0; i < line.size(); ++i) {
       if (line[i] == '"') quoted = !quoted;
@@ -362,10 +380,11 @@ struct SinumerikReader::Impl {
       if (!ident_start(ch)) throw BlockError{col, fmt::format("unexpected `{}`", ch)};
       // An address letter directly followed by its number: X12.5, G04, M3, N10 (not R11=..., an
       // assignment to the arithmetic parameter R11).
-      if (std::isalpha(static_cast<unsigned char>(ch)) && c.i + 1 < c.text.size() && !assigns(c) &&
-          (std::isdigit(static_cast<unsigned char>(c.text[c.i + 1])) || c.text[c.i + 1] == '-' ||
+      // ASCII tests inline, as std::isalpha and std::toupper in the "C" locale (not a call each).
+      if (ncmodel::is_letter(ch) && c.i + 1 < c.text.size() && !assigns(c) &&
+          ((c.text[c.i + 1] >= '0' && c.text[c.i + 1] <= '9') || c.text[c.i + 1] == '-' ||
            c.text[c.i + 1] == '.' || c.text[c.i + 1] == '+')) {
-        const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        const char letter = static_cast<char>(ch & ~0x20);
         ++c.i;
         const double v = c.number();
         address(b, letter, {v, Dim::Modal}, col);
@@ -790,6 +809,17 @@ struct SinumerikReader::Impl {
     }
   }
 
+  // A program's first line may be its punched-tape header: `%` in the first column, then the file
+  // name (`%_N_MAIN_MPF`, `%Flange3_MPF`) or nothing; the control reads it as the file's name, not
+  // as a block. True when `line` is one (then it is skipped); a `%` anywhere else is an error.
+  static bool is_tape_header(std::string_view line) {
+    if (line.empty() || line[0] != '%') return false;
+    std::size_t i = 1;
+    while (i < line.size() && ident_char(line[i])) ++i;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    return i == line.size();
+  }
+
   // The label a line starts with (after its block number), upper case; empty when none.
   static std::string label_of(std::string_view line) {
     std::size_t i = 0;
@@ -823,6 +853,7 @@ struct SinumerikReader::Impl {
       Source& s = stack.back();
       const std::size_t depth = stack.size();
       main_line = depth == 1 ? current_line : 0;
+      if (current_line == 1 && is_tape_header(raw)) continue;
       std::string_view text = strip_comment(raw);
       // The block number, then a label (registered where it stands, for GOTOB).
       Cursor c{text};
@@ -838,7 +869,8 @@ struct SinumerikReader::Impl {
         while (c.i < text.size() && text[c.i] != ':') ++c.i;
         ++c.i;
       }
-      Block b;
+      Block& b = block_;
+      b.clear();
       try {
         parse(c, b);
         execute(b);

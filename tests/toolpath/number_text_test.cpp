@@ -75,6 +75,14 @@ std::vector<double> table() {
     v.push_back(static_cast<double>(n) / std::pow(10.0, places));
     v.push_back(decimal(std::to_string(n) + "e-" + std::to_string(places)));
   }
+  // Coordinates as a program writes them: up to four decimals, an integer part of up to six digits
+  // (below 10 000, and around it, most often): the shortest of the fast path's forms.
+  for (int i = 0; i < 200000; ++i) {
+    const int places = static_cast<int>(rng() % 5);
+    const std::uint64_t n = rng() % (rng() % 4 == 0 ? 10000000000ull : 100000000ull) / (rng() % 3 == 0 ? 1 : 10000);
+    v.push_back(decimal(std::to_string(n) + "e-" + std::to_string(places)));
+    v.push_back(decimal(std::to_string(n + 99990000) + "e-" + std::to_string(places)));
+  }
   // Any bit pattern.
   for (int i = 0; i < 200000; ++i) {
     const std::uint64_t bits = rng();

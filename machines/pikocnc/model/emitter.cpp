@@ -30,7 +30,7 @@ void Emitter::add(std::string_view name) {
     return;
   }
   if (tail_ == queue_.size()) {
-    queue_.emplace_back();
+    queue_.emplace_back().keep_name_on_heap();  // pop() swaps it with the consumer's command
     lines_.push_back(0);
   }
   Command& c = queue_[tail_];

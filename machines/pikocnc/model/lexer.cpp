@@ -7,6 +7,8 @@
 #include <cmath>
 #include <string>
 
+#include "machines/ncmodel/block_text.hpp"
+
 namespace pikocnc {
 namespace {
 
@@ -178,6 +180,64 @@ std::size_t read_simple_number(std::string_view s, std::size_t i, Number& n) {
   return end;
 }
 
+// The common line in one pass of its own: words `L[-]digits[.digits]` of up to fifteen digits
+// between blanks, each value letter once, G and M codes unsigned of at most nine digits, nothing
+// else (no comment, no `+`, no comma, no blank inside a number). Fills `out` as lex_line_general
+// does and returns true; returns false at anything else, with `out` partly filled and nothing
+// reported, and the general reader reads the line again from its start.
+bool lex_common_line(std::string_view s, Block& out) {
+  const char* const begin = s.data();
+  const char* const end = begin + s.size();
+  const char* p = begin;
+  std::uint32_t present = 0;
+  std::size_t codes = 0;
+  while (p != end) {
+    const char c = *p;
+    if (class_of(c) == kBlank) {
+      ++p;
+      continue;
+    }
+    if (static_cast<unsigned>((c | 0x20) - 'a') >= 26) return false;
+    const auto column = static_cast<std::uint32_t>(p - begin + 1);
+    const ncmodel::PlainDecimal number = ncmodel::read_plain_decimal(p + 1, end);
+    p = number.end;
+    const bool negative = number.negative;
+    const std::uint64_t mantissa = number.mantissa, int_part = number.int_part;
+    const std::size_t digits = number.digits(), frac_digits = number.decimals;
+    if (digits == 0 || digits > 15) return false;  // no number, or one from_chars must round
+    // Blanks, then a letter or the end: more digits after blanks belong to this number.
+    while (p != end && class_of(*p) == kBlank) ++p;
+    if (p != end && class_of(*p) != kLetter) return false;
+    const char letter = static_cast<char>(c & ~0x20);
+    if (letter == 'N') continue;  // line numbers are ignored
+    if (letter == 'G' || letter == 'M') {
+      if (negative || digits > 9 || codes == Block::kMaxCodes) return false;
+      std::uint64_t frac = mantissa - int_part * kPow10Int[frac_digits];
+      int dot_digits = static_cast<int>(frac_digits);
+      while (dot_digits > 0 && frac % 10 == 0) {
+        frac /= 10;
+        --dot_digits;
+      }
+      CodeWord& w = out.codes[codes++];
+      w.letter = letter;
+      w.number = static_cast<int>(int_part);
+      w.dot = static_cast<int>(frac);
+      w.dot_digits = dot_digits;
+      w.column = column;
+      continue;
+    }
+    const auto k = static_cast<std::size_t>(letter - 'A');
+    if (present & (1u << k)) return false;  // given twice: the general reader warns
+    const double v = static_cast<double>(mantissa) / kPow10[frac_digits];  // exact: both fit a double
+    present |= 1u << k;
+    out.value[k] = negative ? -v : v;
+    out.column[k] = column;
+  }
+  out.present = present;
+  out.code_count = codes;
+  return true;
+}
+
 }  // namespace
 
 bool is_percent_line(std::string_view line) {
@@ -189,6 +249,14 @@ bool is_percent_line(std::string_view line) {
 }
 
 void lex_line(std::string_view s, std::size_t line_number, Block& out, Diagnostics& diag) {
+  out.line = line_number;
+  out.has_comment = false;
+  out.comment = {};
+  out.text = s;
+  if (!lex_common_line(s, out)) lex_line_general(s, line_number, out, diag);
+}
+
+void lex_line_general(std::string_view s, std::size_t line_number, Block& out, Diagnostics& diag) {
   out.line = line_number;
   out.present = 0;
   out.code_count = 0;

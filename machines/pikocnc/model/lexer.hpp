@@ -42,6 +42,9 @@ struct Block {
 
 // Splits `line` into `out`. Problems go to `diagnostics` at their line:column.
 void lex_line(std::string_view line, std::size_t line_number, Block& out, Diagnostics& diagnostics);
+// The same without lex_line's shortcut for the common line (plain words between blanks): what
+// the shortcut is tested against.
+void lex_line_general(std::string_view line, std::size_t line_number, Block& out, Diagnostics& diagnostics);
 
 // True when `line` is the program start: its first non-blank character is `%`.
 bool is_percent_line(std::string_view line);

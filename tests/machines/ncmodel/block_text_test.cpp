@@ -57,7 +57,8 @@ TEST(BlockText, BadNumbersAreErrorsAtTheirColumn) {
 namespace {
 
 // Random numbers as the readers meet them (signs, points, leading and trailing zeros, long runs of
-// digits, a letter after): the one-pass reader stops where the number ends and gives strtod's value.
+// digits, a letter after): the shortcut for plain numbers and the general loop behind it stop where
+// the number ends and give strtod's value.
 TEST(BlockText, RandomNumbersAsStrtod) {
   std::mt19937_64 rng(25);
   const std::string alphabet = "00123456789.";

@@ -3,6 +3,9 @@
 // parameters, trace lines), the commands must be those a consumer with fresh commands gets.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -93,4 +96,29 @@ TEST(MotionOut, RecycledCommandsAsFreshOnes) {
   }
 }
 
+// clean() rounds without libm's round: the same doubles as round(v * 1e9) / 1e9 (and -0 as 0) on
+// random values of every magnitude, halves of a nanometre, and the edges of its shortcut.
+TEST(MotionOutClean, SameAsRoundingWithStdRound) {
+  auto reference = [](double v) {
+    const double r = std::round(v * 1e9) / 1e9;
+    return r == 0 ? 0.0 : r;
+  };
+  std::vector<double> values = {0.0, -0.0, 0.5e-9, -0.5e-9, 1.5e-9, 2.5e-9, -2.5e-9, 1e-9, 0x1p51 / 1e9, -0x1p51 / 1e9,
+                                0x1p52 / 1e9, 1e300, -1e300, std::numeric_limits<double>::infinity(),
+                                -std::numeric_limits<double>::infinity()};
+  std::mt19937_64 rng(1);
+  for (int i = 0; i < 1000000; ++i) {
+    const double scale = std::pow(10.0, static_cast<double>(static_cast<int>(rng() % 24)) - 12);
+    values.push_back((static_cast<double>(rng() >> 11) / 9007199254740992.0 - 0.5) * scale);
+    values.push_back((static_cast<double>(rng() % 2000000001) - 1e9 + 0.5) / 1e9);  // halves of a nanometre
+    values.push_back(std::nextafter(values.back(), 0.0));
+  }
+  for (const double v : values) {
+    const double a = ncmodel::clean(v), b = reference(v);
+    ASSERT_EQ(std::memcmp(&a, &b, sizeof a), 0) << v;
+  }
+  EXPECT_TRUE(std::isnan(ncmodel::clean(std::numeric_limits<double>::quiet_NaN())));
+}
+
 }  // namespace
+

@@ -107,7 +107,9 @@ TEST(PikoLexer, FastAndGeneralNumberReadersAgree) {
     pikocnc::lex_line(general, 1, b, db);
     ASSERT_EQ(a.present, b.present) << fast;
     for (int k = 0; k < 26; ++k)
-      if ((a.present >> k) & 1) ASSERT_EQ(std::bit_cast<std::uint64_t>(a.value[k]), std::bit_cast<std::uint64_t>(b.value[k])) << fast;
+      if ((a.present >> k) & 1) {
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(a.value[k]), std::bit_cast<std::uint64_t>(b.value[k])) << fast;
+      }
     ASSERT_EQ(a.code_count, b.code_count) << fast;
     for (std::size_t k = 0; k < a.code_count; ++k) {
       ASSERT_EQ(a.codes[k].number, b.codes[k].number) << fast;
@@ -116,6 +118,74 @@ TEST(PikoLexer, FastAndGeneralNumberReadersAgree) {
     }
     ASSERT_EQ(da.kept().size(), db.kept().size()) << fast;
     for (std::size_t k = 0; k < da.kept().size(); ++k) ASSERT_EQ(da.kept()[k].message, db.kept()[k].message) << fast;
+  }
+}
+
+// lex_line reads the common line (plain words between blanks) by a shortcut of its own and
+// leaves every other line to lex_line_general: both must give the same block and the same
+// warnings on any line. Random lines of plain words, with now and then a piece that is not
+// plain (signs, commas, blanks inside numbers, comments, repeats, long numbers, stray bytes).
+TEST(PikoLexer, CommonLineShortcutAgreesWithTheGeneralReader) {
+  std::mt19937_64 rng(2025);
+  auto pick = [&](std::string_view from) { return from[rng() % from.size()]; };
+  auto digits = [&](std::size_t n) {
+    std::string d;
+    for (std::size_t i = 0; i < n; ++i) d += static_cast<char>('0' + rng() % 10);
+    return d;
+  };
+  auto word = [&] {
+    std::string w(1, pick("NGMXYZIJKFSTRPQABgmxyzn"));
+    switch (rng() % 24) {
+      case 0: w += '+'; break;
+      case 1: w += ' '; break;
+      case 2: w += "- "; break;
+      default: if (rng() % 3 == 0) w += '-';
+    }
+    w += digits(rng() % 8);
+    if (rng() % 2) w += (rng() % 20 == 0 ? ',' : '.') + digits(rng() % 10);
+    switch (rng() % 30) {
+      case 0: w += digits(rng() % 12); break;  // past fifteen digits at times
+      case 1: w += " " + digits(1 + rng() % 2); break;  // a blank inside the number
+      case 2: w += ".5"; break;  // a second point
+      case 3: w += pick("=#%&\t\r\x80,"); break;
+      default: break;
+    }
+    return w;
+  };
+  const std::string_view comments[] = {" (note)", "; lift", " ' quote", " // end", "(", " \xE2\x80\x98 q"};
+  for (int i = 0; i < 200000; ++i) {
+    std::string line;
+    if (rng() % 10 == 0) line += "\t ";
+    for (std::size_t n = rng() % 8; n > 0; --n) line += word() + std::string(rng() % 4 == 0 ? 0 : 1 + rng() % 2, ' ');
+    if (rng() % 20 == 0) line += comments[rng() % std::size(comments)];
+    pikocnc::Block a, b;
+    pikocnc::Diagnostics da, db;
+    pikocnc::lex_line(line, 3, a, da);
+    pikocnc::lex_line_general(line, 3, b, db);
+    ASSERT_EQ(a.line, b.line) << line;
+    ASSERT_EQ(a.text, b.text) << line;
+    ASSERT_EQ(a.present, b.present) << line;
+    for (int k = 0; k < 26; ++k)
+      if ((a.present >> k) & 1) {
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(a.value[k]), std::bit_cast<std::uint64_t>(b.value[k])) << line;
+        ASSERT_EQ(a.column[k], b.column[k]) << line;
+      }
+    ASSERT_EQ(a.code_count, b.code_count) << line;
+    for (std::size_t k = 0; k < a.code_count; ++k) {
+      ASSERT_EQ(a.codes[k].letter, b.codes[k].letter) << line;
+      ASSERT_EQ(a.codes[k].number, b.codes[k].number) << line;
+      ASSERT_EQ(a.codes[k].dot, b.codes[k].dot) << line;
+      ASSERT_EQ(a.codes[k].dot_digits, b.codes[k].dot_digits) << line;
+      ASSERT_EQ(a.codes[k].column, b.codes[k].column) << line;
+    }
+    ASSERT_EQ(a.has_comment, b.has_comment) << line;
+    ASSERT_EQ(a.comment, b.comment) << line;
+    ASSERT_EQ(a.comment_column, b.comment_column) << line;
+    ASSERT_EQ(da.kept().size(), db.kept().size()) << line;
+    for (std::size_t k = 0; k < da.kept().size(); ++k) {
+      ASSERT_EQ(da.kept()[k].where.column, db.kept()[k].where.column) << line;
+      ASSERT_EQ(da.kept()[k].message, db.kept()[k].message) << line;
+    }
   }
 }
 
