@@ -96,28 +96,109 @@ bool TraceReader::read_line() {
   return true;
 }
 
-bool TraceReader::next(Command& out) {
-  // Find the header: skip blank lines; anything else before the first header is an error.
-  while (!have_line_) {
-    if (!read_line()) return false;
-    std::size_t i = skip_blanks(line_, 0);
-    if (i == line_.size() || line_[i] == ';') continue;
-    have_line_ = true;
-  }
-  // Reset `out` but keep its parameter slots: refilling them in place avoids allocating per command.
+// The fast path. Most lines of a job are a header `(N)@name   ==> pairs` or a continuation
+// `   ..> pairs` whose pairs the common run reads (trace_pairs.cpp) whole, and a header or
+// continuation line is recognised from its first bytes. The fast path reads such lines straight
+// from the chunk, where a line ends at its '\n' and the chunk at the string's '\0', so the line
+// end is found by the scan itself instead of a memchr pass before it. It touches only what the
+// general rule sets again when it reads the same line: on anything else (a line cut by the end of
+// the chunk, a value the run does not take, free text, a blank line) it leaves the line unread
+// and the general rule reads it from its start, the same way with or without the fast path.
+
+std::uint32_t TraceReader::next_line32() const {
+  return static_cast<std::uint32_t>(std::min<std::size_t>(line_number_ + 1, 0xffffffff));
+}
+
+// The fast path read the line up to `next`, where the next line starts.
+void TraceReader::take_line(const char* next) {
+  buffer_pos_ = static_cast<std::size_t>(next - buffer_.data());
+  ++line_number_;
+  line32_ = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
+}
+
+// The unread line starts with `(digits)@`: a header (also by the general rule, opens_header).
+bool TraceReader::header_ahead() const {
+  const char* p = buffer_.data() + buffer_pos_;  // at the chunk's end: its '\0'
+  if (*p != '(' || general_only_) return false;
+  const char* const digits = ++p;
+  while (is_digit(*p)) ++p;
+  return p != digits && p[0] == ')' && p[1] == '@';  // p[1]: at most the '\0'
+}
+
+// A header `(N)@name   ==> pairs` (header_ahead() holds), N of at most nine digits.
+bool TraceReader::fast_header(Command& out) {
+  const char* const line = buffer_.data() + buffer_pos_;
+  const char* p = line + 1;
+  int depth = 0;
+  while (is_digit(*p)) depth = depth * 10 + (*p++ - '0');
+  if (p - line > 10 || !is_ident_start(p[2])) return false;
+  const char* const name = p + 1;
+  p += 3;
+  while (is_ident_char(*p)) ++p;
+  shelf_.rename(out, {name, static_cast<std::size_t>(p - name)});
+  const char* const after_name = p;
+  p = skip_terminated_blanks(p, buffer_.data() + buffer_.size());
+  if (p[0] != '=' || p[1] != '=' || p[2] != '>') return false;  // each read only after the one before matched
+  const char* const next = fast_pairs(out, p + 3, line, next_line32());
+  if (!next) return false;
+  out.depth = depth;
+  name_may_be_cut_ = p == after_name;
+  take_line(next);
+  return true;
+}
+
+// A continuation `   ..> pairs`.
+bool TraceReader::fast_continuation(Command& out) {
+  if (general_only_) return false;
+  const char* const line = buffer_.data() + buffer_pos_;
+  const char* const p = skip_terminated_blanks(line, buffer_.data() + buffer_.size());
+  if (p[0] != '.' || p[1] != '.' || p[2] != '>') return false;  // each read only after the one before matched
+  const char* const next = fast_pairs(out, p + 3, line, next_line32());
+  if (!next) return false;
+  take_line(next);
+  return true;
+}
+
+// Resets `out` but keeps its parameter slots: refilling them in place avoids allocating per command.
+void TraceReader::begin_command(Command& out) {
   out.depth = 1;  // out.name: still the name of what out's parameters last held (see parse_header)
   out.trace.clear();
   used_parameters_ = 0;
   have_line_ = false;
+}
+
+bool TraceReader::next(Command& out) {
   const bool fresh = out.parameters.capacity() == 0;
-  if (!parse_header(out)) {
-    std::size_t col = skip_blanks(line_, 0) + 1;
-    fail(col, "expected a command header `(N)@name` or `@name`");
+  bool header_read = false;
+  if (!have_line_ && header_ahead()) {
+    begin_command(out);
+    header_read = fast_header(out);
+    if (!header_read) have_line_ = read_line();  // the general rule reads it again (the chunk holds it)
+  }
+  if (!header_read) {
+    // Find the header: skip blank lines; anything else before the first header is an error.
+    while (!have_line_) {
+      if (!read_line()) return false;
+      std::size_t i = skip_blanks(line_, 0);
+      if (i == line_.size() || line_[i] == ';') continue;
+      have_line_ = true;
+    }
+    begin_command(out);
+    if (!parse_header(out)) {
+      std::size_t col = skip_blanks(line_, 0) + 1;
+      fail(col, "expected a command header `(N)@name` or `@name`");
+    }
   }
   out.index = next_index_++;
   out.line = line32_;
   bool first = true;
-  while (read_line()) {
+  for (;;) {
+    if (fast_continuation(out)) {
+      first = false;
+      continue;
+    }
+    if (header_ahead()) break;  // the next command's, read by the next call
+    if (!read_line()) break;
     std::size_t i = skip_blanks(line_, 0);
     if (i == line_.size() || line_[i] == ';') continue;  // blank lines and `;` comments
     std::string_view rest = line_.substr(i);
