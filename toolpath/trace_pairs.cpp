@@ -223,20 +223,29 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   if (stopped != text.size()) parse_other_pairs(out, text, stopped, column, otherwise);
 }
 
-// The fast path's pairs: from `p`, in the line that starts at `line` in the chunk and is numbered
-// `line_number`, to the end of that line, when the common run reads them all (or there are none).
-// Returns where the next line starts, else nullptr with nothing counted: the general rule then
-// reads the line again from its start and stores over what the run stored.
-const char* TraceReader::fast_pairs(Command& out, const char* p, const char* line, std::uint32_t line_number) {
+// The fast path's lines: the pairs from `p`, in the line that starts at `line` in the chunk, to the
+// end of that line, then every `..>` continuation after it, each line taken (counted, and the
+// reader moved past it) when the common run reads its pairs whole (or it has none). Returns the
+// number of lines taken: the first line not taken is left to the general rule, which reads it
+// again from its start and stores over what the run stored.
+std::size_t TraceReader::fast_lines(Command& out, const char* p, const char* line) {
   const NewlineEnd end{buffer_.data() + buffer_.size()};
-  p = skip_terminated_blanks(p, end.chunk_end);
-  if (!end.at(p)) {
-    std::size_t used = used_parameters_;
-    p = run_pairs(out, used, p, end, 1 - reinterpret_cast<std::uintptr_t>(line), line_number);
-    if (!end.at(p)) return nullptr;
+  std::size_t taken = 0;
+  std::size_t used = used_parameters_;
+  for (;;) {
+    p = skip_terminated_blanks(p, end.chunk_end);
+    if (!end.at(p)) {
+      p = run_pairs(out, used, p, end, 1 - reinterpret_cast<std::uintptr_t>(line), next_line32());
+      if (!end.at(p)) return taken;
+    }
     used_parameters_ = used;
+    line = p + (*p == '\r' ? 2 : 1);
+    take_line(line);
+    ++taken;
+    p = skip_terminated_blanks(line, end.chunk_end);
+    if (p[0] != '.' || p[1] != '.' || p[2] != '>') return taken;  // each read only after the one before matched
+    p += 3;
   }
-  return p + (*p == '\r' ? 2 : 1);
 }
 
 // The pairs from `i` on, where the common run stopped (at the first pair when it took none).

@@ -105,17 +105,6 @@ bool TraceReader::read_line() {
 // the chunk, a value the run does not take, free text, a blank line) it leaves the line unread
 // and the general rule reads it from its start, the same way with or without the fast path.
 
-std::uint32_t TraceReader::next_line32() const {
-  return static_cast<std::uint32_t>(std::min<std::size_t>(line_number_ + 1, 0xffffffff));
-}
-
-// The fast path read the line up to `next`, where the next line starts.
-void TraceReader::take_line(const char* next) {
-  buffer_pos_ = static_cast<std::size_t>(next - buffer_.data());
-  ++line_number_;
-  line32_ = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
-}
-
 // The unread line starts with `(digits)@`: a header (also by the general rule, opens_header).
 bool TraceReader::header_ahead() const {
   const char* p = buffer_.data() + buffer_pos_;  // at the chunk's end: its '\0'
@@ -125,38 +114,35 @@ bool TraceReader::header_ahead() const {
   return p != digits && p[0] == ')' && p[1] == '@';  // p[1]: at most the '\0'
 }
 
-// A header `(N)@name   ==> pairs` (header_ahead() holds), N of at most nine digits.
-bool TraceReader::fast_header(Command& out) {
+// A header `(N)@name   ==> pairs` (header_ahead() holds), N of at most nine digits, and the
+// continuation lines after it (fast_lines): the number of lines taken, 0 when the general rule
+// reads the header.
+std::size_t TraceReader::fast_header(Command& out) {
   const char* const line = buffer_.data() + buffer_pos_;
   const char* p = line + 1;
   int depth = 0;
   while (is_digit(*p)) depth = depth * 10 + (*p++ - '0');
-  if (p - line > 10 || !is_ident_start(p[2])) return false;
+  if (p - line > 10 || !is_ident_start(p[2])) return 0;
   const char* const name = p + 1;
   p += 3;
   while (is_ident_char(*p)) ++p;
   shelf_.rename(out, {name, static_cast<std::size_t>(p - name)});
   const char* const after_name = p;
   p = skip_terminated_blanks(p, buffer_.data() + buffer_.size());
-  if (p[0] != '=' || p[1] != '=' || p[2] != '>') return false;  // each read only after the one before matched
-  const char* const next = fast_pairs(out, p + 3, line, next_line32());
-  if (!next) return false;
+  if (p[0] != '=' || p[1] != '=' || p[2] != '>') return 0;  // each read only after the one before matched
+  // Set for the general rule as well when it reads the header again: it sets both the same way.
   out.depth = depth;
   name_may_be_cut_ = p == after_name;
-  take_line(next);
-  return true;
+  return fast_lines(out, p + 3, line);
 }
 
-// A continuation `   ..> pairs`.
+// Continuation lines `   ..> pairs` (fast_lines): whether it took one.
 bool TraceReader::fast_continuation(Command& out) {
   if (general_only_) return false;
   const char* const line = buffer_.data() + buffer_pos_;
   const char* const p = skip_terminated_blanks(line, buffer_.data() + buffer_.size());
   if (p[0] != '.' || p[1] != '.' || p[2] != '>') return false;  // each read only after the one before matched
-  const char* const next = fast_pairs(out, p + 3, line, next_line32());
-  if (!next) return false;
-  take_line(next);
-  return true;
+  return fast_lines(out, p + 3, line) > 0;
 }
 
 // Resets `out` but keeps its parameter slots: refilling them in place avoids allocating per command.
@@ -169,12 +155,14 @@ void TraceReader::begin_command(Command& out) {
 
 bool TraceReader::next(Command& out) {
   const bool fresh = out.parameters.capacity() == 0;
-  bool header_read = false;
+  std::size_t fast = 0;  // lines the fast path took, the header first
   if (!have_line_ && header_ahead()) {
     begin_command(out);
-    header_read = fast_header(out);
-    if (!header_read) have_line_ = read_line();  // the general rule reads it again (the chunk holds it)
+    out.line = next_line32();
+    fast = fast_header(out);
+    if (fast == 0) have_line_ = read_line();  // the general rule reads it again (the chunk holds it)
   }
+  const bool header_read = fast > 0;
   if (!header_read) {
     // Find the header: skip blank lines; anything else before the first header is an error.
     while (!have_line_) {
@@ -188,10 +176,10 @@ bool TraceReader::next(Command& out) {
       std::size_t col = skip_blanks(line_, 0) + 1;
       fail(col, "expected a command header `(N)@name` or `@name`");
     }
+    out.line = line32_;
   }
   out.index = next_index_++;
-  out.line = line32_;
-  bool first = true;
+  bool first = fast <= 1;  // the next line is the first after the header
   for (;;) {
     if (fast_continuation(out)) {
       first = false;

@@ -3,6 +3,7 @@
 // `> NC line` output, wrapped long names). See docs/trace-format.md.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -43,11 +44,17 @@ private:
   bool read_line();
   void begin_command(Command& out);
   bool header_ahead() const;
-  bool fast_header(Command& out);
+  std::size_t fast_header(Command& out);
   bool fast_continuation(Command& out);
-  const char* fast_pairs(Command& out, const char* p, const char* line, std::uint32_t line_number);
-  void take_line(const char* next);
-  std::uint32_t next_line32() const;
+  std::size_t fast_lines(Command& out, const char* p, const char* line);
+  // The number of the line after the current one, as positions keep it (saturating).
+  std::uint32_t next_line32() const { return static_cast<std::uint32_t>(std::min<std::size_t>(line_number_ + 1, 0xffffffff)); }
+  // The fast path read the line up to `next`, where the next line starts.
+  void take_line(const char* next) {
+    buffer_pos_ = static_cast<std::size_t>(next - buffer_.data());
+    ++line_number_;
+    line32_ = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
+  }
   [[noreturn]] void fail(std::size_t column, const std::string& message) const;
   bool parse_header(Command& out);
   void parse_body_line(Command& out, bool first_after_header, std::size_t first_non_blank);
