@@ -55,6 +55,7 @@ void TraceReader::fail(std::size_t column, const std::string& message) const {
 // whole there, else in carry_; false at the end of the input.
 bool TraceReader::read_line() {
   carry_.clear();
+  header_ahead_ = false;
   for (;;) {
     if (buffer_pos_ < buffer_.size()) {
       const char* start = buffer_.data() + buffer_pos_;
@@ -106,12 +107,15 @@ bool TraceReader::read_line() {
 // and the general rule reads it from its start, the same way with or without the fast path.
 
 // The unread line starts with `(digits)@`: a header (also by the general rule, opens_header).
-bool TraceReader::header_ahead() const {
+// Known until the reader moves: the body loop asks before it stops, next() again after.
+bool TraceReader::header_ahead() {
+  if (header_ahead_) return true;
   const char* p = buffer_.data() + buffer_pos_;  // at the chunk's end: its '\0'
   if (*p != '(' || general_only_) return false;
   const char* const digits = ++p;
   while (is_digit(*p)) ++p;
-  return p != digits && p[0] == ')' && p[1] == '@';  // p[1]: at most the '\0'
+  header_ahead_ = p != digits && p[0] == ')' && p[1] == '@';  // p[1]: at most the '\0'
+  return header_ahead_;
 }
 
 // A header `(N)@name   ==> pairs` (header_ahead() holds), N of at most nine digits, and the
@@ -181,11 +185,11 @@ bool TraceReader::next(Command& out) {
   out.index = next_index_++;
   bool first = fast <= 1;  // the next line is the first after the header
   for (;;) {
+    if (header_ahead()) break;  // the next command's, read by the next call
     if (fast_continuation(out)) {
       first = false;
       continue;
     }
-    if (header_ahead()) break;  // the next command's, read by the next call
     if (!read_line()) break;
     std::size_t i = skip_blanks(line_, 0);
     if (i == line_.size() || line_[i] == ';') continue;  // blank lines and `;` comments

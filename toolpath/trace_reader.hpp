@@ -43,7 +43,7 @@ public:
 private:
   bool read_line();
   void begin_command(Command& out);
-  bool header_ahead() const;
+  bool header_ahead();
   std::size_t fast_header(Command& out);
   bool fast_continuation(Command& out);
   std::size_t fast_lines(Command& out, const char* p, const char* line);
@@ -52,6 +52,7 @@ private:
   // The fast path read the line up to `next`, where the next line starts.
   void take_line(const char* next) {
     buffer_pos_ = static_cast<std::size_t>(next - buffer_.data());
+    header_ahead_ = false;
     ++line_number_;
     line32_ = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
   }
@@ -79,6 +80,7 @@ private:
   std::size_t used_parameters_ = 0; // parameter slots of the command being read
   bool name_may_be_cut_ = false; // the header's name ran up to `==>` and may continue below
   bool general_only_ = false;    // read_by_general_rule()
+  bool header_ahead_ = false;    // header_ahead() found the unread line to be a header
   ParameterShelf shelf_;
   std::atomic<std::uintmax_t> bytes_read_{0};
 };
