@@ -208,7 +208,9 @@ inline bool fast_decimal(const NumberScan& n, double& out) {
   // Up to 15 digits the mantissa is below 10^15 < 2^53 and there are at most 15 decimals.
   if (n.exponent || (n.digits > 15 && (n.digits > 19 || n.mantissa > (std::uint64_t{1} << 53) || n.decimals > 22)))
     return false;
-  const double v = static_cast<double>(n.mantissa) / kPow10[n.decimals];
+  // The mantissa is at most 2^53 here: converted as a signed integer, exactly the same double
+  // without the fix-up an unsigned conversion takes.
+  const double v = static_cast<double>(static_cast<std::int64_t>(n.mantissa)) / kPow10[n.decimals];
   out = n.negative ? -v : v;
   return true;
 }
