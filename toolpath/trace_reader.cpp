@@ -124,8 +124,8 @@ bool TraceReader::header_ahead() {
 std::size_t TraceReader::fast_header(Command& out) {
   const char* const line = buffer_.data() + buffer_pos_;
   const char* p = line + 1;
-  int depth = 0;
-  while (is_digit(*p)) depth = depth * 10 + (*p++ - '0');
+  unsigned depth = 0;  // wraps harmlessly past nine digits: the general rule reads those
+  while (is_digit(*p)) depth = depth * 10 + static_cast<unsigned>(*p++ - '0');
   if (p - line > 10 || !is_ident_start(p[2])) return 0;
   const char* const name = p + 1;
   p += 3;
@@ -135,7 +135,7 @@ std::size_t TraceReader::fast_header(Command& out) {
   p = skip_terminated_blanks(p, buffer_.data() + buffer_.size());
   if (p[0] != '=' || p[1] != '=' || p[2] != '>') return 0;  // each read only after the one before matched
   // Set for the general rule as well when it reads the header again: it sets both the same way.
-  out.depth = depth;
+  out.depth = static_cast<int>(depth);
   name_may_be_cut_ = p == after_name;
   return fast_lines(out, p + 3, line);
 }
