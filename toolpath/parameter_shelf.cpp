@@ -10,24 +10,34 @@ namespace toolpath {
 
 void ParameterShelf::exchange(Command& out, std::string_view name) {
   const Label wanted = label_of(name);
+  if (wanted.size == 0) {  // a long name: no entry has it, and none is given up for it
+    out.name.assign(name);
+    return;
+  }
   const Label returned = label_of(out.name);
-  out.name.assign(name);
-  if (wanted.size == 0) return;
   for (Entry& e : entries_) {
-    if (e.label == wanted) {
-      if (out.parameters.capacity() == 0) {
-        out.parameters = e.parameters;  // a fresh command (the pipeline filling up): keep the entry
-        return;
-      }
-      out.parameters.swap(e.parameters);
-      e.label = returned;  // the entry now keeps the vector handed back
+    if (e.label != wanted) continue;
+    if (out.parameters.capacity() == 0) {
+      out.parameters = e.parameters;  // a fresh command (the pipeline filling up): keep the entry
+      out.name.assign(name);
       return;
     }
+    // The entry keeps the vector handed back and the name of what it held; its own name is
+    // `name` (the same label), which `out` takes by the swap.
+    out.parameters.swap(e.parameters);
+    out.name.swap(e.name);
+    e.label = returned;
+    return;
   }
-  if (returned.size == 0 || out.parameters.empty()) return;  // nothing worth keeping
+  if (returned.size == 0 || out.parameters.empty()) {  // nothing worth keeping
+    out.name.assign(name);
+    return;
+  }
   Entry& e = entries_[victim_];
   victim_ = (victim_ + 1) % entries_.size();
   out.parameters.swap(e.parameters);
+  out.name.swap(e.name);
+  out.name.assign(name);
   e.label = returned;
 }
 
@@ -44,6 +54,7 @@ void ParameterShelf::keep(const Command& c) {
     victim_ = (victim_ + 1) % entries_.size();
   }
   unused->parameters = c.parameters;
+  unused->name = c.name;
   unused->label = label;
 }
 

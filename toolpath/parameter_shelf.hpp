@@ -5,13 +5,15 @@
 // a few commands in rotation, so on a job that alternates shapes (`@line`, `@arc`, `@line`, ...)
 // the buffer handed back mostly held the other shape, and every name would be copied and looked
 // up again. Before reading command `@arc` into such a buffer the reader swaps its parameter vector
-// for the one last used by an `@arc` (and shelves the one it was given, under its own name).
+// for the one last used by an `@arc` (and shelves the one it was given, under its own name); the
+// name strings are swapped along, so that naming the command copies nothing either.
 // Only buffers move: what is read is the same whichever vector it goes into.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 #include "toolpath/command.hpp"
@@ -46,7 +48,9 @@ private:
   static Label label_of(std::string_view name);
 
   struct Entry {
-    Label label;  // the command whose parameters `parameters` last held
+    Entry() { name.reserve(sizeof(std::string)); }  // on the heap: swapping names swaps pointers
+    Label label;       // the command whose parameters `parameters` last held, when size > 0:
+    std::string name;  // that command's name (a command takes it by a swap instead of a copy)
     std::vector<Parameter> parameters;
   };
   // A job alternates a handful of command shapes; a few entries bound the memory kept.

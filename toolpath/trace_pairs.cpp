@@ -101,24 +101,36 @@ std::size_t user_value_end(std::string_view text, std::size_t v) {
   return at + n + 1;
 }
 
-// The common run of pairs, from `at` on: each named as the next slot of `out` already is, its
+// Where the text of a line ends, for the common run below. The general rule cut the line at its
+// '\n' and knows the end; the reader's fast path does not, and takes a '\n' (or "\r\n", as
+// read_line strips the '\r') where a value or the blanks after it end for the line end: no name,
+// number, word or blank the run reads holds one, so the run never steps over it.
+struct KnownEnd {
+  const char* end;
+  bool at(const char* k) const { return k == end; }
+  const char* bound() const { return end; }  // the names compared lie below it
+};
+struct NewlineEnd {
+  const char* chunk_end;  // the string's '\0' there stops every scan
+  bool at(const char* k) const { return *k == '\n' || (*k == '\r' && k[1] == '\n'); }
+  const char* bound() const { return chunk_end; }
+};
+
+// The common run of pairs, from `q` on: each named as the next slot of `out` already is, its
 // value a number (with its change flag) that needs no from_chars, or a bare word, then blanks and
 // the next such pair, or the end of the line. They are stored without the general loop's state.
 // A value is stored as soon as it is read, before what follows it is looked at: when that is
 // not the end of the line or the next slot's pair, the run stops at the pair, not counted, and
 // the general loop reads it again from its name and stores it over (or throws). Returns where the
-// run stopped, text.size() at the end; `used` counts the slots filled.
-[[gnu::always_inline]] inline std::size_t common_pairs(Command& out, std::size_t& used, std::string_view text, std::size_t at,
-                                           std::size_t column, std::uint32_t line) {
+// run stopped: the end of the line (end.at() holds) when it read everything; `used` counts the
+// slots filled. A value's column is column_base plus its address (below 2^32: see kMaxLine).
+template <class End>
+[[gnu::always_inline]] inline const char* run_pairs(Command& out, std::size_t& used, const char* q, End end,
+                                                    std::uintptr_t column_base, std::uint32_t line) {
   Parameter* p = out.parameters.data() + used;
   Parameter* const last = out.parameters.data() + out.parameters.size();
-  const char* const start = text.data();
-  const char* const end = start + text.size();
-  const char* q = start + at;  // the pair being read
-  const char* v = p < last ? slot_value(*p, q, end) : nullptr;
-  if (!v) return at;
-  // A value's column from its address (below 2^32: see kMaxLine).
-  const std::uintptr_t column_base = column - reinterpret_cast<std::uintptr_t>(start);
+  const char* v = p < last ? slot_value(*p, q, end.bound()) : nullptr;
+  if (!v) return q;
   for (;;) {
     // Here `v` is where the value of the pair at `q`, for slot `p`, starts.
     p->line = line;
@@ -138,23 +150,32 @@ std::size_t user_value_end(std::string_view text, std::size_t v) {
     }
     // Then the end of the line, or blanks and the next slot's pair. The byte after the line is not
     // a blank: the blanks end by then.
-    if (k != end) {
+    if (!end.at(k)) {
       if (*k != ' ' && *k != '\t') break;  // is_blank, without the table's address in a register
       do ++k;
       while (*k == ' ' || *k == '\t');
-      if (k != end) {
-        if (p + 1 == last || !(v = slot_value(p[1], k, end))) break;
+      if (!end.at(k)) {
+        if (p + 1 == last || !(v = slot_value(p[1], k, end.bound()))) break;
         ++p;
         q = k;
         continue;
       }
     }
     ++p;
-    q = end;
+    q = k;
     break;
   }
   used = static_cast<std::size_t>(p - out.parameters.data());
-  return static_cast<std::size_t>(q - start);
+  return q;
+}
+
+// run_pairs on the text of a line from offset `at` (its byte in column `column`): the offset
+// where it stopped, text.size() when it read everything.
+[[gnu::always_inline]] inline std::size_t common_pairs(Command& out, std::size_t& used, std::string_view text, std::size_t at,
+                                                       std::size_t column, std::uint32_t line) {
+  const char* const start = text.data();
+  const std::uintptr_t column_base = column - reinterpret_cast<std::uintptr_t>(start);
+  return static_cast<std::size_t>(run_pairs(out, used, start + at, KnownEnd{start + text.size()}, column_base, line) - start);
 }
 
 }  // namespace
@@ -200,6 +221,31 @@ void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t c
   const std::size_t stopped = common_pairs(out, used, text, i, column, line32_);
   used_parameters_ = used;
   if (stopped != text.size()) parse_other_pairs(out, text, stopped, column, otherwise);
+}
+
+// The fast path's lines: the pairs from `p`, in the line that starts at `line` in the chunk, to the
+// end of that line, then every `..>` continuation after it, each line taken (counted, and the
+// reader moved past it) when the common run reads its pairs whole (or it has none). Returns the
+// number of lines taken: the first line not taken is left to the general rule, which reads it
+// again from its start and stores over what the run stored.
+std::size_t TraceReader::fast_lines(Command& out, const char* p, const char* line) {
+  const NewlineEnd end{buffer_.data() + buffer_.size()};
+  std::size_t taken = 0;
+  std::size_t used = used_parameters_;
+  for (;;) {
+    p = skip_terminated_blanks(p, end.chunk_end);
+    if (!end.at(p)) {
+      p = run_pairs(out, used, p, end, 1 - reinterpret_cast<std::uintptr_t>(line), next_line32());
+      if (!end.at(p)) return taken;
+    }
+    used_parameters_ = used;
+    line = p + (*p == '\r' ? 2 : 1);
+    take_line(line);
+    ++taken;
+    p = skip_terminated_blanks(line, end.chunk_end);
+    if (p[0] != '.' || p[1] != '.' || p[2] != '>') return taken;  // each read only after the one before matched
+    p += 3;
+  }
 }
 
 // The pairs from `i` on, where the common run stopped (at the first pair when it took none).

@@ -55,6 +55,7 @@ void TraceReader::fail(std::size_t column, const std::string& message) const {
 // whole there, else in carry_; false at the end of the input.
 bool TraceReader::read_line() {
   carry_.clear();
+  header_ahead_ = false;
   for (;;) {
     if (buffer_pos_ < buffer_.size()) {
       const char* start = buffer_.data() + buffer_pos_;
@@ -96,28 +97,100 @@ bool TraceReader::read_line() {
   return true;
 }
 
-bool TraceReader::next(Command& out) {
-  // Find the header: skip blank lines; anything else before the first header is an error.
-  while (!have_line_) {
-    if (!read_line()) return false;
-    std::size_t i = skip_blanks(line_, 0);
-    if (i == line_.size() || line_[i] == ';') continue;
-    have_line_ = true;
-  }
-  // Reset `out` but keep its parameter slots: refilling them in place avoids allocating per command.
+// The fast path. Most lines of a job are a header `(N)@name   ==> pairs` or a continuation
+// `   ..> pairs` whose pairs the common run reads (trace_pairs.cpp) whole, and a header or
+// continuation line is recognised from its first bytes. The fast path reads such lines straight
+// from the chunk, where a line ends at its '\n' and the chunk at the string's '\0', so the line
+// end is found by the scan itself instead of a memchr pass before it. It touches only what the
+// general rule sets again when it reads the same line: on anything else (a line cut by the end of
+// the chunk, a value the run does not take, free text, a blank line) it leaves the line unread
+// and the general rule reads it from its start, the same way with or without the fast path.
+
+// The unread line starts with `(digits)@`: a header (also by the general rule, opens_header).
+// Known until the reader moves: the body loop asks before it stops, next() again after.
+bool TraceReader::header_ahead() {
+  if (header_ahead_) return true;
+  const char* p = buffer_.data() + buffer_pos_;  // at the chunk's end: its '\0'
+  if (*p != '(' || general_only_) return false;
+  const char* const digits = ++p;
+  while (is_digit(*p)) ++p;
+  header_ahead_ = p != digits && p[0] == ')' && p[1] == '@';  // p[1]: at most the '\0'
+  return header_ahead_;
+}
+
+// A header `(N)@name   ==> pairs` (header_ahead() holds), N of at most nine digits, and the
+// continuation lines after it (fast_lines): the number of lines taken, 0 when the general rule
+// reads the header.
+std::size_t TraceReader::fast_header(Command& out) {
+  const char* const line = buffer_.data() + buffer_pos_;
+  const char* p = line + 1;
+  unsigned depth = 0;  // wraps harmlessly past nine digits: the general rule reads those
+  while (is_digit(*p)) depth = depth * 10 + static_cast<unsigned>(*p++ - '0');
+  if (p - line > 10 || !is_ident_start(p[2])) return 0;
+  const char* const name = p + 1;
+  p += 3;
+  while (is_ident_char(*p)) ++p;
+  shelf_.rename(out, {name, static_cast<std::size_t>(p - name)});
+  const char* const after_name = p;
+  p = skip_terminated_blanks(p, buffer_.data() + buffer_.size());
+  if (p[0] != '=' || p[1] != '=' || p[2] != '>') return 0;  // each read only after the one before matched
+  // Set for the general rule as well when it reads the header again: it sets both the same way.
+  out.depth = static_cast<int>(depth);
+  name_may_be_cut_ = p == after_name;
+  return fast_lines(out, p + 3, line);
+}
+
+// Continuation lines `   ..> pairs` (fast_lines): whether it took one.
+bool TraceReader::fast_continuation(Command& out) {
+  if (general_only_) return false;
+  const char* const line = buffer_.data() + buffer_pos_;
+  const char* const p = skip_terminated_blanks(line, buffer_.data() + buffer_.size());
+  if (p[0] != '.' || p[1] != '.' || p[2] != '>') return false;  // each read only after the one before matched
+  return fast_lines(out, p + 3, line) > 0;
+}
+
+// Resets `out` but keeps its parameter slots: refilling them in place avoids allocating per command.
+void TraceReader::begin_command(Command& out) {
   out.depth = 1;  // out.name: still the name of what out's parameters last held (see parse_header)
   out.trace.clear();
   used_parameters_ = 0;
   have_line_ = false;
+}
+
+bool TraceReader::next(Command& out) {
   const bool fresh = out.parameters.capacity() == 0;
-  if (!parse_header(out)) {
-    std::size_t col = skip_blanks(line_, 0) + 1;
-    fail(col, "expected a command header `(N)@name` or `@name`");
+  std::size_t fast = 0;  // lines the fast path took, the header first
+  if (!have_line_ && header_ahead()) {
+    begin_command(out);
+    out.line = next_line32();
+    fast = fast_header(out);
+    if (fast == 0) have_line_ = read_line();  // the general rule reads it again (the chunk holds it)
+  }
+  const bool header_read = fast > 0;
+  if (!header_read) {
+    // Find the header: skip blank lines; anything else before the first header is an error.
+    while (!have_line_) {
+      if (!read_line()) return false;
+      std::size_t i = skip_blanks(line_, 0);
+      if (i == line_.size() || line_[i] == ';') continue;
+      have_line_ = true;
+    }
+    begin_command(out);
+    if (!parse_header(out)) {
+      std::size_t col = skip_blanks(line_, 0) + 1;
+      fail(col, "expected a command header `(N)@name` or `@name`");
+    }
+    out.line = line32_;
   }
   out.index = next_index_++;
-  out.line = line32_;
-  bool first = true;
-  while (read_line()) {
+  bool first = fast <= 1;  // the next line is the first after the header
+  for (;;) {
+    if (header_ahead()) break;  // the next command's, read by the next call
+    if (fast_continuation(out)) {
+      first = false;
+      continue;
+    }
+    if (!read_line()) break;
     std::size_t i = skip_blanks(line_, 0);
     if (i == line_.size() || line_[i] == ';') continue;  // blank lines and `;` comments
     std::string_view rest = line_.substr(i);

@@ -3,6 +3,7 @@
 // `> NC line` output, wrapped long names). See docs/trace-format.md.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -35,8 +36,26 @@ public:
   // thread than the one reading.
   std::uintmax_t bytes_read() const { return bytes_read_.load(std::memory_order_relaxed); }
 
+  // Reads every line by the general rule, without the fast path for the common lines of the
+  // inline layout: tests hold that path to the rule with it.
+  void read_by_general_rule() { general_only_ = true; }
+
 private:
   bool read_line();
+  void begin_command(Command& out);
+  bool header_ahead();
+  std::size_t fast_header(Command& out);
+  bool fast_continuation(Command& out);
+  std::size_t fast_lines(Command& out, const char* p, const char* line);
+  // The number of the line after the current one, as positions keep it (saturating).
+  std::uint32_t next_line32() const { return static_cast<std::uint32_t>(std::min<std::size_t>(line_number_ + 1, 0xffffffff)); }
+  // The fast path read the line up to `next`, where the next line starts.
+  void take_line(const char* next) {
+    buffer_pos_ = static_cast<std::size_t>(next - buffer_.data());
+    header_ahead_ = false;
+    ++line_number_;
+    line32_ = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
+  }
   [[noreturn]] void fail(std::size_t column, const std::string& message) const;
   bool parse_header(Command& out);
   void parse_body_line(Command& out, bool first_after_header, std::size_t first_non_blank);
@@ -60,6 +79,8 @@ private:
   std::size_t next_index_ = 0;
   std::size_t used_parameters_ = 0; // parameter slots of the command being read
   bool name_may_be_cut_ = false; // the header's name ran up to `==>` and may continue below
+  bool general_only_ = false;    // read_by_general_rule()
+  bool header_ahead_ = false;    // header_ahead() found the unread line to be a header
   ParameterShelf shelf_;
   std::atomic<std::uintmax_t> bytes_read_{0};
 };

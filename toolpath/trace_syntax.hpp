@@ -56,6 +56,25 @@ inline std::size_t skip_blanks(std::string_view s, std::size_t i) {
   return i;
 }
 
+// skip_blanks for text that a byte other than a blank follows in memory (the reader's chunk ends
+// in the string's '\0'): the words are loaded below `end`, the last bytes looked at one by one.
+inline const char* skip_terminated_blanks(const char* p, const char* end) {
+  constexpr std::uint64_t kSpaces = 0x2020202020202020;
+  while (end - p >= 8) {
+    std::uint64_t w;
+    std::memcpy(&w, p, 8);
+    const std::uint64_t other = w ^ kSpaces;
+    if (other == 0) {
+      p += 8;
+      continue;
+    }
+    if constexpr (std::endian::native == std::endian::little) p += std::countr_zero(other) / 8;
+    break;
+  }
+  while (*p == ' ' || *p == '\t') ++p;
+  return p;
+}
+
 inline std::string_view trim_right(std::string_view s) {
   while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
   return s;
@@ -189,7 +208,9 @@ inline bool fast_decimal(const NumberScan& n, double& out) {
   // Up to 15 digits the mantissa is below 10^15 < 2^53 and there are at most 15 decimals.
   if (n.exponent || (n.digits > 15 && (n.digits > 19 || n.mantissa > (std::uint64_t{1} << 53) || n.decimals > 22)))
     return false;
-  const double v = static_cast<double>(n.mantissa) / kPow10[n.decimals];
+  // The mantissa is at most 2^53 here: converted as a signed integer, exactly the same double
+  // without the fix-up an unsigned conversion takes.
+  const double v = static_cast<double>(static_cast<std::int64_t>(n.mantissa)) / kPow10[n.decimals];
   out = n.negative ? -v : v;
   return true;
 }

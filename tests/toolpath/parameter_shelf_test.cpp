@@ -53,6 +53,7 @@ TEST(ParameterShelf, RotatingBuffersReadAsFreshOnes) {
     if (k % 5 == 0)  // near misses of the names the slots hold: longer, other case, a prefix
       alternating += "(1)@arc ==> xpos:1 ypos2:2 ZPOS:3 fee:4 xcenter_reL:5\n           ..> ycenter:6 arc_direction:CW\n";
     if (k % 13 == 0) alternating += "(1)@c" + std::to_string(k) + " ==> a:1 b:2\n";
+    if (k % 3 == 0) alternating += "(1)@a_name_of_more_than_16 ==> xpos:1 ypos:2\n";  // never shelved
   }
   const std::string texts[] = {alternating, slurp("golden/solidcam-fanuc/toolpath.trace"),
                                slurp("toolpath/data/solidcam_layout.trace")};

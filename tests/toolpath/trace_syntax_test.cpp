@@ -62,6 +62,29 @@ TEST(TraceSyntax, SkipBlanksAsByteByByte) {
   }
 }
 
+// skip_terminated_blanks (the reader's fast path: words below `end`, then the terminator stops the
+// bytes) stops where the byte-by-byte skip stops, for every start and every terminator.
+TEST(TraceSyntax, SkipTerminatedBlanksAsByteByByte) {
+  std::mt19937 rng(20261131);
+  const std::string alphabet = "     \t\tx:";
+  for (int round = 0; round < 20000; ++round) {
+    std::string text;
+    const std::size_t length = rng() % 30;
+    for (std::size_t k = 0; k < length; ++k) text += alphabet[rng() % alphabet.size()];
+    for (char terminator : {'\n', '\r', '\0'}) {
+      const std::string line = text + terminator;
+      const char* const end = line.data() + text.size();
+      for (std::size_t from = 0; from <= text.size(); ++from) {
+        std::size_t expected = from;
+        while (expected < text.size() && (text[expected] == ' ' || text[expected] == '\t')) ++expected;
+        ASSERT_EQ(toolpath::trace_syntax::skip_terminated_blanks(line.data() + from, end) - line.data(),
+                  static_cast<std::ptrdiff_t>(expected))
+            << '`' << text << "` from " << from;
+      }
+    }
+  }
+}
+
 TEST(TraceSyntax, FlagLetters) {
   for (int c = 0; c < 256; ++c) {
     const auto expected = c == 'T' || c == 't'   ? toolpath::ChangeFlag::Changed
