@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "toolpath/trace_reader.hpp"
+#include "tests/support/random_edits.hpp"
 
 namespace {
 
@@ -172,15 +173,7 @@ TEST(TraceReaderFastLines, MutatedLayoutExample) {
   std::mt19937 rng(20261130);
   for (int round = 0; round < 3000; ++round) {
     std::string text = seed;
-    for (int e = 1 + static_cast<int>(rng() % 4); e > 0; --e) {
-      const std::size_t at = rng() % (text.size() + 1);
-      switch (rng() % 4) {
-        case 0: if (at < text.size()) text[at] = alphabet[rng() % (sizeof alphabet - 1)]; break;
-        case 1: text.insert(at, 1, alphabet[rng() % (sizeof alphabet - 1)]); break;
-        case 2: if (at < text.size()) text.erase(at, 1 + rng() % 8); break;
-        case 3: text.resize(at); break;
-      }
-    }
+    test_support::random_edits(text, rng, std::string_view(alphabet, sizeof alphabet - 1), 1 + static_cast<int>(rng() % 4));
     check(text);
   }
 }

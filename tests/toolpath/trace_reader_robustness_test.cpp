@@ -8,6 +8,7 @@
 #include <string>
 
 #include "toolpath/trace_reader.hpp"
+#include "tests/support/random_edits.hpp"
 #include "tests/support/read_error.hpp"
 
 namespace {
@@ -37,16 +38,7 @@ TEST(TraceReaderRobustness, MutationsReadOrFailWithAPosition) {
     ASSERT_FALSE(seed.empty());
     for (int round = 0; round < 1500; ++round) {
       std::string text = seed;
-      const int edits = 1 + static_cast<int>(rng() % 4);
-      for (int e = 0; e < edits; ++e) {
-        const std::size_t at = rng() % (text.size() + 1);
-        switch (rng() % 4) {
-          case 0: if (at < text.size()) text[at] = alphabet[rng() % (sizeof alphabet - 1)]; break;
-          case 1: text.insert(at, 1, alphabet[rng() % (sizeof alphabet - 1)]); break;
-          case 2: if (at < text.size()) text.erase(at, 1 + rng() % 8); break;
-          case 3: text.resize(at); break;
-        }
-      }
+      test_support::random_edits(text, rng, std::string_view(alphabet, sizeof alphabet - 1), 1 + static_cast<int>(rng() % 4));
       const std::string error = try_read(text);
       if (!error.empty()) {
         ++failures;
