@@ -112,6 +112,9 @@ struct GenItem {
   std::uint32_t site = 0;         // format cache slot
   std::uint32_t required = 0;     // Group: first ref in Program::lists that make it required
   std::uint32_t required_count = 0;
+  // Value: the global cell of `ref` when it is a scalar global; Group: that of its only required
+  // variable. kNone otherwise. Saves the reference's indirections on every item of every line.
+  std::uint32_t global_cell = kNone;
   bool has_gcode = false;         // Group: contains the variable gcode (gcode_space)
   SourcePos pos;
 };

@@ -10,6 +10,12 @@ namespace gppl {
 
 namespace g = gppl::grammar;
 
+namespace {
+
+std::uint32_t global_cell_of(const VarRef& r) { return r.local || r.indices != kNone ? kNone : r.cell; }
+
+}  // namespace
+
 void Compiler::generate(const SyntaxNode& n, Context& ctx, SourcePos pos) {
   const auto first = std::uint32_t(program_->items.size());
   for (const auto& item : n.children) generate_item(*item, ctx, false);
@@ -54,6 +60,7 @@ void Compiler::generate_item(const SyntaxNode& n, Context& ctx, bool in_group) {
     group.required = std::uint32_t(program_->lists.size());
     group.required_count = std::uint32_t(required.size());
     group.has_gcode = has_gcode;
+    if (required.size() == 1) group.global_cell = global_cell_of(program_->refs[required[0]]);
     program_->lists.insert(program_->lists.end(), required.begin(), required.end());
     return;
   }
@@ -78,6 +85,7 @@ void Compiler::generate_item(const SyntaxNode& n, Context& ctx, bool in_group) {
     item.a = expression(operand, ctx);
     item.ref = program_->nodes[item.a].a;
     const VarRef& r = program_->refs[item.ref];
+    item.global_cell = global_cell_of(r);
     if (r.index_count == 0) {
       // Rule 2 of 6.4: a string variable `name_f` (system, global or local) formats `name`.
       const std::string format_name = std::string(operand.children[0]->string_view()) + "_f";

@@ -144,6 +144,10 @@ struct Interpreter::State {
   const Cell& relation_cell(const Relation::Cell& c) { return c.local ? stack[frames.back().base + c.index] : globals[c.index]; }
   Cell& element(const VarRef& ref) { return ref.indices == kNone ? cell(ref) : array_element(ref); }
   Cell& array_element(const VarRef& ref);
+  // The variable of a Value item (its global cell when the compiler resolved it).
+  Cell& item_cell(const GenItem& item) {
+    return item.global_cell != kNone ? globals[item.global_cell] : element(program.refs[item.ref]);
+  }
   // The value of a Constant or scalar Variable node without copying it; nullptr for other nodes.
   const Value* operand(const Node& n) {
     if (n.kind == NodeKind::Constant) return &program.constants[n.a];
@@ -240,6 +244,10 @@ struct Interpreter::State {
   void new_line();
   // A modal group prints when one of its variables is active and changed (6.5).
   bool group_required(const GenItem& group) {
+    if (group.global_cell != kNone) {
+      const Cell& c = globals[group.global_cell];
+      return c.active && c.changed;
+    }
     for (std::uint32_t i = 0; i < group.required_count; ++i) {
       const Cell& c = element(program.refs[program.lists[group.required + i]]);
       if (c.active && c.changed) return true;

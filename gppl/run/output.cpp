@@ -157,7 +157,7 @@ void Interpreter::State::render(const GenItem& item, OutputLine& out) {
     return;
   }
   if (item.ref != kNone) {  // a variable: no scratch value, and its format is usually known already
-    const Value& value = element(program.refs[item.ref]).value;
+    const Value& value = item_cell(item).value;
     if (value.type == Type::String) {
       out.append(value.text);  // strings print verbatim; a format is ignored (6.4)
       return;
@@ -230,7 +230,7 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
           render(item, piece);
           append(piece);
         }
-        if (clear_change && item.ref != kNone) element(program.refs[item.ref]).changed = false;
+        if (clear_change && item.ref != kNone) item_cell(item).changed = false;
         break;
       }
       case ItemKind::LineFunction:

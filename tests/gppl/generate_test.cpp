@@ -189,6 +189,31 @@ a_f = '5.3(*100)'
 a<<1>> = 1.5
 {nb, a<<1>>})",
                      "1.5"},
+        // A group's one required variable and a printed variable: a global (resolved to its cell
+        // when compiled), a local and an array element (looked up at run time) behave alike.
+        GenerateCase{"modal_global_local_and_element", R"(global numeric g
+global numeric a<<2>>
+local numeric v
+g = 1
+v = 2
+a<<2>> = 3
+{nb, [' G'g], [' V'v], [' A'a<<2>>]}
+g = 1
+v = 2
+a<<2>> = 3
+{nb, 'N', [' G'g], [' V'v], [' A'a<<2>>]}
+g = 4
+v = 5
+a<<2>> = 6
+{nb, [' G'g], [' V'v], [' A'a<<2>>]}
+g = 7
+v = 8
+a<<2>> = 9
+active(g) = FALSE
+active(v) = FALSE
+active(a<<2>>) = FALSE
+{nb, 'N', [' G'g], [' V'v], [' A'a<<2>>]})",
+                     " G1. V2. A3.\nN\n G4. V5. A6.\nN"},
         GenerateCase{"logical_and_integer_defaults", "integer_def_f = '3.0'\n{nb, TRUE, ' ', 7}", "1. 7."},
         GenerateCase{"empty_default_falls_back", "numeric_def_f = ''\n{nb, 1.23456}", "1.235"},
         GenerateCase{"string_ignores_format", "s = 'abc'\n{nb, s:'5.3'}", "abc"},
