@@ -3,8 +3,6 @@
 // 6.4 (format selection), 6.5 (modal groups, gcode_space), 6.6 (col, colrel).
 #include <fmt/format.h>
 
-#include <algorithm>
-
 #include "gppl/run/machine.hpp"
 
 namespace gppl {
