@@ -157,7 +157,63 @@ void TraceReader::begin_command(Command& out) {
   have_line_ = false;
 }
 
+// skim_job_motions(): a basic motion inside a job (after its opening tool changes), or any command
+// deeper than the stream, whose header has the level-5 layout `(depth)@name   ==>` (the name cannot
+// go on below). Any other header is kept and read in full, which is always right.
+bool TraceReader::skipped_in_skim(std::string_view h) const {
+  if (h.front() != '(') return false;
+  std::size_t j = 1;
+  unsigned depth = 0;
+  while (j < h.size() && j < 10 && is_digit(h[j])) depth = depth * 10 + static_cast<unsigned>(h[j++] - '0');
+  if (j == 1 || h.substr(j, 2) != ")@") return false;
+  const std::size_t name = j + 1;
+  const std::size_t after_name = name + 1 + ident_length(h.substr(name + 1));
+  const std::size_t arrow = skip_blanks(h, after_name);
+  if (arrow == after_name || h.substr(arrow, 3) != "==>") return false;
+  if (depth >= 2) return true;
+  if (!in_job_ || job_leading_) return false;
+  const std::string_view n = h.substr(name, after_name - name);
+  return iequals(n, "@line") || iequals(n, "@arc") || iequals(n, "@rapid_move");
+}
+
+// Puts the header of the next command a skim keeps in line_ (have_line_), counting the ones it
+// skips; false at the end of the input.
+bool TraceReader::skim_to_kept_header() {
+  for (;; have_line_ = false) {
+    if (!have_line_ && !read_line()) return false;
+    const std::size_t i = skip_blanks(line_, 0);
+    if (i == line_.size() || line_[i] == ';') continue;
+    const std::string_view rest = line_.substr(i);
+    if (rest.front() != '@' && !(rest.front() == '(' && opens_header(rest))) {
+      if (seen_header_) continue;  // a line of a skipped command (a kept one reads its own)
+      have_line_ = true;           // before the first header: the general rule says what is wrong
+      return true;
+    }
+    seen_header_ = true;
+    if (!skipped_in_skim(rest)) {
+      have_line_ = true;
+      return true;
+    }
+    ++next_index_;
+  }
+}
+
+// Where a kept command leaves the skim: in a job or not, and whether the job's opening tool
+// changes go on (procedure generation keeps those with the main program).
+void TraceReader::follow_job(const Command& kept) {
+  if (!kept.is_stream_command()) return;
+  const std::string_view n = kept.name;
+  if (iequals(n, "@start_of_job")) {
+    in_job_ = job_leading_ = true;
+  } else if (iequals(n, "@end_of_job")) {
+    in_job_ = job_leading_ = false;
+  } else if (!iequals(n, "@change_tool") && !iequals(n, "@turn_change_tool") && !iequals(n, "@chng_tool_cnext")) {
+    job_leading_ = false;
+  }
+}
+
 bool TraceReader::next(Command& out) {
+  if (skim_ && !skim_to_kept_header()) return false;
   const bool fresh = out.parameters.capacity() == 0;
   std::size_t fast = 0;  // lines the fast path took, the header first
   if (!have_line_ && header_ahead()) {
@@ -203,6 +259,7 @@ bool TraceReader::next(Command& out) {
   }
   out.parameters.resize(used_parameters_);
   if (fresh) shelf_.keep(out);
+  if (skim_) follow_job(out);
   return true;
 }
 

@@ -40,8 +40,18 @@ public:
   // inline layout: tests hold that path to the rule with it.
   void read_by_general_rule() { general_only_ = true; }
 
+  // A first pass over a job, for what only the job's outline decides (prp: procedure generation
+  // in two passes): commands deeper than the stream (depth 2 on) and the basic motions (@line,
+  // @arc, @rapid_move) inside a job, after the tool changes that open it, are skipped unread. They
+  // still count, so indices and lines stay those of a full read; the lines of a skipped command
+  // are not parsed, so what is wrong in them is found by the full read only.
+  void skim_job_motions() { skim_ = true; }
+
 private:
   bool read_line();
+  bool skim_to_kept_header();
+  bool skipped_in_skim(std::string_view header) const;
+  void follow_job(const Command& kept);
   void begin_command(Command& out);
   bool header_ahead();
   std::size_t fast_header(Command& out);
@@ -81,6 +91,11 @@ private:
   bool name_may_be_cut_ = false; // the header's name ran up to `==>` and may continue below
   bool general_only_ = false;    // read_by_general_rule()
   bool header_ahead_ = false;    // header_ahead() found the unread line to be a header
+  // skim_job_motions(): where the stream is, as the commands kept so far tell.
+  bool skim_ = false;
+  bool seen_header_ = false;
+  bool in_job_ = false;
+  bool job_leading_ = false;     // only tool changes since the job's @start_of_job
   ParameterShelf shelf_;
   std::atomic<std::uintmax_t> bytes_read_{0};
 };
