@@ -240,12 +240,41 @@ private:
 // Receives the filters' warnings (a stream that does not match the PRP, see docs/prp.md).
 using WarningSink = std::function<void(const toolpath::Command& command, const std::string& message)>;
 
+// What a first pass over a job found for procedure generation (gen_procs = Y or C): its main
+// program and the jobs' labels, so that the chain can send the main program at once and the bodies
+// as the job streams in (docs/prp.md, "Procedures in two passes").
+class JobForecast;
+
+// Whether the parameters let procedures be generated in two passes: they ask for procedures, and
+// no filter before procedure generation depends on the motions a skim leaves out (mode commands,
+// init_cpos, wire guides).
+bool two_passes_possible(const MachineParameters& params);
+
+// The first pass, over `skimmed`: the job as toolpath::TraceReader::skim_job_motions() reads it,
+// depth 0 and 1 only. nullptr when the job needs one pass (shared drill point lists, a job that stays
+// inline, commands after @end_of_file, a toolpath with procedures already) or the skim cannot be
+// read (the full pass reports why). Warnings are not given here: the full pass gives them.
+std::shared_ptr<JobForecast> forecast_jobs(const MachineParameters& params, toolpath::CommandSource& skimmed);
+
+// Thrown by a chain built with a forecast when the job turns out to differ from it outside the
+// bodies (which a skim should never cause): the run must start again without a forecast.
+class ForecastMismatch : public std::exception {
+public:
+  explicit ForecastMismatch(std::string what) : what_(std::move(what)) {}
+  const char* what() const noexcept override { return what_.c_str(); }
+
+private:
+  std::string what_;
+};
+
 // Wires the stream filters the parameters call for, in the order of spec 3.0, around `input`
 // (which must outlive the chain). Filters whose parameters ask for nothing are left out. The
 // parameters must outlive the chain too. Filters throw StreamError; warnings go to `warn` (dropped
-// when empty).
+// when empty). With a `forecast` of the same job (forecast_jobs), procedures are generated in its
+// second pass.
 std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParameters& params,
                                                             toolpath::CommandSource& input,
-                                                            WarningSink warn = {});
+                                                            WarningSink warn = {},
+                                                            std::shared_ptr<JobForecast> forecast = nullptr);
 
 }  // namespace prp

@@ -36,21 +36,47 @@ private:
   std::vector<std::unique_ptr<toolpath::CommandSource>> filters_;
 };
 
+// The filters before procedure generation: checks, drill expansion, mode commands, rotary axes.
+void add_structure_filters(Chain& chain, const MachineParameters& params, const WarningSink& warn) {
+  chain.add<StructureCheck>(params, warn);
+  // Before procedure generation reorders the jobs: it follows the tool and the side in stream order.
+  if (CompensationCheck::needed(params)) chain.add<CompensationCheck>(params.numeric("min_delt_arc_rad"), warn);
+  if (DrillExpansion::needed(params)) chain.add<DrillExpansion>(params, warn);
+  if (!ModeCommands::wanted(params).empty()) chain.add<ModeCommands>(params, warn);
+  chain.add<RotaryAxes>(params, warn);
+  if (params.logical("init_cpos")) chain.add<InitCpos>();
+  if (WireGuides::needed(params)) chain.add<WireGuides>(params);
+}
+
 }  // namespace
 
+bool two_passes_possible(const MachineParameters& params) {
+  // Each of these looks at motions a skim leaves out (ModeCommands: the first motion of the job;
+  // InitCpos: the last C of any command; WireGuides: every move) to decide what it adds.
+  return ProcedureGeneration::needed(params) && ModeCommands::wanted(params).empty() && !params.logical("init_cpos") &&
+         !WireGuides::needed(params);
+}
+
+std::shared_ptr<JobForecast> forecast_jobs(const MachineParameters& params, toolpath::CommandSource& skimmed) {
+  if (!two_passes_possible(params)) return nullptr;
+  try {
+    Chain chain(skimmed);
+    add_structure_filters(chain, params, {});
+    auto found = ProcedureGeneration::forecast(chain, params);
+    return found ? std::make_shared<JobForecast>(std::move(*found)) : nullptr;
+  } catch (const std::exception&) {
+    return nullptr;  // one pass then, which reports whatever it was where it is
+  }
+}
+
 std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParameters& params,
-                                                            toolpath::CommandSource& input, WarningSink warn) {
+                                                            toolpath::CommandSource& input, WarningSink warn,
+                                                            std::shared_ptr<JobForecast> forecast) {
   auto chain = std::make_unique<Chain>(input);
-  chain->add<StructureCheck>(params, warn);
-  // Before procedure generation reorders the jobs: it follows the tool and the side in stream order.
-  if (CompensationCheck::needed(params)) chain->add<CompensationCheck>(params.numeric("min_delt_arc_rad"), warn);
-  if (DrillExpansion::needed(params)) chain->add<DrillExpansion>(params, warn);
-  if (!ModeCommands::wanted(params).empty()) chain->add<ModeCommands>(params, warn);
-  chain->add<RotaryAxes>(params, warn);
-  if (params.logical("init_cpos")) chain->add<InitCpos>();
-  if (WireGuides::needed(params)) chain->add<WireGuides>(params);
+  add_structure_filters(*chain, params, warn);
   // After the filters that add commands to inline jobs, so that those commands travel with their job.
-  if (ProcedureGeneration::needed(params)) chain->add<ProcedureGeneration>(params);
+  if (forecast && two_passes_possible(params)) chain->add<ProcedureGeneration>(params, std::move(*forecast));
+  else if (ProcedureGeneration::needed(params)) chain->add<ProcedureGeneration>(params);
   if (params.has("dflt_start") || params.has("dflt_end")) chain->add<DefaultPositions>(params);
   if (params.numeric("eps_line") > 0) chain->add<ShortLineFilter>(params.numeric("eps_line"));
   // Always there: even a machine that takes every arc is not sent one that is no arc (check_circle).

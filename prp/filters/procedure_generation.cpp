@@ -29,6 +29,16 @@ void mix(std::uint64_t& hash, double v) {
   }
 }
 
+constexpr std::uint64_t kHashStart = 14695981039346656037u;
+
+// A cycle's point list, hashed to find the cycles that share one.
+void add_point(auto& cycle, const toolpath::Command& point) {
+  ++cycle.points;
+  for (const char* axis : {"xpos", "ypos", "zpos"}) mix(cycle.hash, number(point, axis).value_or(0.0));
+}
+
+void end_cycle(auto& cycle) { mix(cycle.hash, static_cast<double>(cycle.points)); }
+
 // A procedure body runs after the main program has changed to later tools, so its @start_of_job
 // names the job's own tool (a parameter @start_of_job has, gpptool 6.1) when the toolpath left it out.
 void add_tool_number(toolpath::Command& start, const auto& job) {
@@ -48,6 +58,41 @@ ProcedureGeneration::ProcedureGeneration(toolpath::CommandSource& input, const M
       drill_proc_(params.logical("drill_proc")),
       range_(procedure_numbers(params)),
       first_label_(range_.dflt.value_or(range_.min.value_or(1))) {}
+
+ProcedureGeneration::ProcedureGeneration(toolpath::CommandSource& input, const MachineParameters& params,
+                                         JobForecast&& forecast)
+    : ProcedureGeneration(input, params) {
+  main_ = std::move(forecast.main);
+  jobs_ = std::move(forecast.jobs);
+  cycles_ = std::move(forecast.cycles);
+  last_label_ = forecast.last_label;
+  forecast_ = true;
+  phase_ = Phase::Main;
+}
+
+std::optional<JobForecast> ProcedureGeneration::forecast(toolpath::CommandSource& skimmed,
+                                                         const MachineParameters& params) {
+  ProcedureGeneration pass(skimmed, params);
+  pass.forecasting_ = true;
+  if (!pass.collect() || !pass.shared_.empty()) return std::nullopt;
+  for (const Job& job : pass.jobs_)
+    if (!job.label) return std::nullopt;
+  // The bodies go where @end_of_file was: nothing of the main program may follow it.
+  toolpath::Command c;
+  CommandKind kind;
+  bool after_end = false;
+  while (pass.main_->read(c, kind)) {
+    if (after_end) return std::nullopt;
+    after_end = c.is_stream_command() && kind == K::end_of_file;
+  }
+  pass.main_->seek(0);
+  JobForecast found;
+  found.main = std::move(pass.main_);
+  found.jobs = std::move(pass.jobs_);
+  found.cycles = std::move(pass.cycles_);
+  found.last_label = pass.last_label_;
+  return found;
+}
 
 bool ProcedureGeneration::next_with_kind(toolpath::Command& out, CommandKind& kind) {
   if (phase_ == Phase::PassThrough && !main_ && !has_held_) return input_.next(out, kind);
@@ -71,6 +116,7 @@ bool ProcedureGeneration::produce(toolpath::Command& out, CommandKind& kind) {
     case Phase::Main: return next_main(out, kind);
     case Phase::Body: return next_body(out, kind);
     case Phase::Points: return next_points(out, kind);
+    case Phase::Live: return next_live(out, kind);
     default: return false;
   }
 }
@@ -86,7 +132,7 @@ bool ProcedureGeneration::pop_queue(toolpath::Command& out, CommandKind& kind) {
 
 bool ProcedureGeneration::collect() {
   main_.emplace();
-  bodies_.emplace();
+  if (!forecasting_) bodies_.emplace();
   toolpath::Command c;
   bool in_job = false, leading = false, in_cycle = false;
   // The tool in the spindle: a job without tool changes of its own works with it. SolidCAM sends a
@@ -104,6 +150,7 @@ bool ProcedureGeneration::collect() {
         bodies_.reset();
         return false;
       }
+      if (forecasting_) return false;  // the full pass reports it
       throw StreamError(c, "the toolpath mixes inline jobs with procedures or loops, so gen_procs cannot "
                            "restructure it");
     }
@@ -112,12 +159,13 @@ bool ProcedureGeneration::collect() {
         job = Job{};
         job.tool_number = current_tool;
         job.index = c.index;
-        job.offset = bodies_->write(c, kind);
         job.first_cycle = cycles_.size();
         toolpath::Command marker;
         marker.name = kJobMarker;
         marker.index = jobs_.size();
         main_->write(marker, K::other);
+        if (forecasting_) main_->write(c, kind);  // the job's head
+        else job.offset = bodies_->write(c, kind);
         in_job = leading = true;
       } else {
         if (c.is_stream_command() && has(kToolChange, kind))
@@ -126,7 +174,7 @@ bool ProcedureGeneration::collect() {
       }
       continue;
     }
-    const std::int64_t at = bodies_->write(c, kind);
+    const std::int64_t at = forecasting_ ? 0 : bodies_->write(c, kind);
     if (!c.is_stream_command()) continue;
     // Turning geometry bodies share the label space of subroutines (a cycle's start_line/end_line
     // names its body by label): the jobs' subroutines take other numbers.
@@ -136,6 +184,7 @@ bool ProcedureGeneration::collect() {
     if (leading && has(kToolChange, kind)) {  // the other order: the job's tool changes open it
       if (const toolpath::Value* t = c.find("tool_number"); t && job.tools == 0) job.tool_number = current_tool = *t;
       ++job.tools;
+      if (forecasting_) main_->write(c, kind);  // the job's head
       continue;
     }
     if (has(kToolChange, kind))
@@ -144,25 +193,25 @@ bool ProcedureGeneration::collect() {
     if (kind == K::drill) {
       cycle = Cycle{};
       cycle.index = c.index;
-      cycle.hash = 14695981039346656037u;
+      cycle.hash = kHashStart;
       in_cycle = true;
     } else if (in_cycle && kind == K::drill_point) {
-      if (cycle.points++ == 0) cycle.points_offset = at;
-      for (const char* axis : {"xpos", "ypos", "zpos"}) mix(cycle.hash, number(c, axis).value_or(0.0));
+      if (cycle.points == 0) cycle.points_offset = at;
+      add_point(cycle, c);
     } else if (in_cycle && kind == K::end_drill) {
       in_cycle = false;
-      mix(cycle.hash, static_cast<double>(cycle.points));
+      end_cycle(cycle);
       cycles_.push_back(cycle);
       ++job.cycles;
     } else if (kind == K::end_of_job) {
       in_cycle = false;  // a cycle without @end_drill is never shared
-      job.end = bodies_->end();
+      job.end = forecasting_ ? 0 : bodies_->end();
       jobs_.push_back(job);
       in_job = false;
     }
   }
   if (in_job) {  // the input ended inside a job: the job ends there
-    job.end = bodies_->end();
+    job.end = forecasting_ ? 0 : bodies_->end();
     jobs_.push_back(job);
   }
   assign_labels();
@@ -233,11 +282,29 @@ void ProcedureGeneration::bracket(toolpath::Command& out, const char* name, std:
 bool ProcedureGeneration::next_main(toolpath::Command& out, CommandKind& kind) {
   if (pop_queue(out, kind)) return true;
   if (!main_->read(out, kind)) {
+    if (forecast_) {  // a main program without @end_of_file: the bodies come in now
+      main_->seek(0);
+      phase_ = Phase::Live;
+      return next_live(out, kind);
+    }
     if (bodies_sent_ || !start_next_procedure()) {
       phase_ = Phase::Done;
       return false;
     }
     return produce(out, kind);
+  }
+  if (out.name == kJobMarker && forecast_) {
+    const Job& job = jobs_[out.index];
+    toolpath::Command start;
+    main_->read(start);
+    add_tool_number(start, job);
+    for (int i = 0; i < job.tools; ++i) {
+      queue_.emplace_back();
+      main_->read(queue_.back());
+    }
+    queue_.emplace_back();
+    call(queue_.back(), *job.label, &start);
+    return next_main(out, kind);
   }
   if (out.name == kJobMarker) {
     const Job& job = jobs_[out.index];
@@ -266,6 +333,13 @@ bool ProcedureGeneration::next_main(toolpath::Command& out, CommandKind& kind) {
     out.set("first_proc_number", toolpath::Value::make_integer(first_label_));
     out.set("last_proc_number", toolpath::Value::make_integer(last_label_));
     out.set("first_user_proc", toolpath::Value::make_integer(last_label_ + 1));
+  }
+  if (stream && kind == K::end_of_file && forecast_) {  // the bodies come in now, then this
+    swap(end_of_file_, out);
+    has_end_of_file_ = true;
+    main_->seek(0);
+    phase_ = Phase::Live;
+    return next_live(out, kind);
   }
   if (stream && kind == K::end_of_file && !bodies_sent_) {
     swap(end_of_file_, out);
@@ -351,6 +425,102 @@ bool ProcedureGeneration::next_body(toolpath::Command& out, CommandKind& kind) {
       }
     }
     return true;
+  }
+}
+
+// The second pass of two: the main program has been sent from the forecast, which main_ now reads
+// again from its start to check the job against it as the job streams in. A body is handed on as
+// it comes, between its @proc and @end_proc; everything outside the bodies is the forecast's and
+// is dropped once checked.
+bool ProcedureGeneration::next_live(toolpath::Command& out, CommandKind& kind) {
+  for (;;) {
+    if (pop_queue(out, kind)) return true;
+    if (bodies_sent_) {
+      phase_ = Phase::Done;
+      return false;
+    }
+    if (!input_.next(out, kind)) {
+      end_live();
+      continue;
+    }
+    const bool stream = out.is_stream_command();
+    if (stream && has(kStructure, kind)) throw ForecastMismatch(fmt::format("{} in a job forecast without it", out.name));
+    if (!live_in_job_) {
+      expect_forecast(out);
+      if (!stream || kind != K::start_of_job) continue;  // sent with the main program
+      // The forecast had this job's marker and head just now: the job is jobs_[live_job_].
+      const Job& job = jobs_[live_job_++];
+      live_in_job_ = live_leading_ = true;
+      live_tools_ = job.tools;
+      cycle_ = job.first_cycle;
+      live_in_cycle_ = false;
+      queue_.emplace_back();
+      bracket(queue_.back(), "@proc", *job.label, std::nullopt, job.index);
+      add_tool_number(out, job);
+      queue_.push_back(out);
+      last_index_ = out.index;
+      continue;
+    }
+    last_index_ = out.index;
+    if (!stream) return true;
+    if (live_tools_ > 0) {  // the job's opening tool changes were sent with its call
+      --live_tools_;
+      expect_forecast(out);
+      continue;
+    }
+    if (std::exchange(live_leading_, false) && has(kToolChange, kind))
+      throw ForecastMismatch(fmt::format("command #{} {}: more tool changes open the job than forecast", out.index, out.name));
+    const Job& job = jobs_[live_job_ - 1];
+    if (kind == K::drill) {
+      live_cycle_ = Cycle{};
+      live_cycle_.hash = kHashStart;
+      live_in_cycle_ = true;
+    } else if (live_in_cycle_ && kind == K::drill_point) {
+      add_point(live_cycle_, out);
+    } else if (live_in_cycle_ && kind == K::end_drill) {
+      live_in_cycle_ = false;
+      end_cycle(live_cycle_);
+      if (cycle_ >= job.first_cycle + job.cycles || cycles_[cycle_].hash != live_cycle_.hash ||
+          cycles_[cycle_].points != live_cycle_.points)
+        throw ForecastMismatch("a drill cycle differs from the forecast");
+      ++cycle_;
+    } else if (kind == K::end_of_job) {
+      live_in_job_ = false;
+      if (cycle_ != job.first_cycle + job.cycles) throw ForecastMismatch("fewer drill cycles than the forecast");
+      queue_.push_back(out);
+      queue_.emplace_back();
+      bracket(queue_.back(), "@end_proc", *job.label, true, last_index_);
+      continue;
+    }
+    return true;
+  }
+}
+
+// The next command of the forecast's main program (a job's marker and head included) must be `c`.
+void ProcedureGeneration::expect_forecast(const toolpath::Command& c) {
+  CommandKind kind;
+  if (!main_->read(expected_, kind)) throw ForecastMismatch(fmt::format("{} after the end of the forecast", c.name));
+  if (expected_.name == kJobMarker && !main_->read(expected_, kind))
+    throw ForecastMismatch("a job's head missing from the forecast");
+  if (!(expected_ == c))
+    throw ForecastMismatch(fmt::format("command #{} {} where the forecast has #{} {}", c.index, c.name, expected_.index,
+                                       expected_.name));
+}
+
+// The job has all come in: a job it ended inside ends there, and the main program's @end_of_file
+// follows the bodies.
+void ProcedureGeneration::end_live() {
+  if (live_in_job_) {
+    live_in_job_ = false;
+    queue_.emplace_back();
+    bracket(queue_.back(), "@end_proc", *jobs_[live_job_ - 1].label, true, last_index_);
+  }
+  toolpath::Command rest;
+  if (live_job_ != jobs_.size() || main_->read(rest)) throw ForecastMismatch("the job ended before its forecast");
+  bodies_sent_ = true;
+  if (has_end_of_file_) {
+    queue_.push_back(std::move(end_of_file_));
+    has_end_of_file_ = false;
   }
 }
 

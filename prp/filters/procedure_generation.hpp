@@ -9,6 +9,13 @@
 // A toolpath that already has procedures or loops (a SolidCAM trace) passes unchanged: it is
 // checked, never restructured (StructureCheck). Jobs are held in a temporary file, not in memory,
 // because @start_of_file names the last procedure label and bodies follow the main program.
+//
+// Two passes, where the job and the PRP allow it (docs/prp.md, "Procedures in two passes"): a
+// first pass over a skim of the job (forecast(): no basic motions inside jobs) finds the main
+// program and the jobs' labels; the second pass (the constructor taking the forecast) sends that
+// main program at once and then the bodies as the job streams in, each in its turn, instead of
+// holding the whole job first. It checks everything outside the bodies against the forecast and
+// throws ForecastMismatch where they differ: the run then starts again in one pass.
 #pragma once
 
 #include <cstdint>
@@ -24,13 +31,22 @@
 
 namespace prp {
 
+class JobForecast;
+
 class ProcedureGeneration final : public KindSource {
 public:
   ProcedureGeneration(toolpath::CommandSource& input, const MachineParameters& params);
+  // The second pass of two: `input` is the whole job, through the same filters as the forecast's.
+  ProcedureGeneration(toolpath::CommandSource& input, const MachineParameters& params, JobForecast&& forecast);
   bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
   // True when the parameters ask for procedures (gen_procs Y or C).
   static bool needed(const MachineParameters& params);
+  // The first pass of two, over `skimmed` (the job through the filters before this one, its basic
+  // motions inside jobs left out): the main program and the jobs, or nothing when the job needs
+  // one pass (a point list that drill cycles share, a job that stays inline, commands after
+  // @end_of_file, a job already structured). Throws what the filters throw.
+  static std::optional<JobForecast> forecast(toolpath::CommandSource& skimmed, const MachineParameters& params);
 
 private:
   struct Job {
@@ -49,16 +65,22 @@ private:
     std::int64_t points_offset = 0;  // first @drill_point in the body spool
     std::optional<std::int64_t> label;  // of the shared point list it calls
   };
-  enum class Phase { Collect, PassThrough, Main, Body, Points, Done };
+  enum class Phase { Collect, PassThrough, Main, Body, Points, Live, Done };
+  friend class JobForecast;
 
   // Each of these hands out a command and its kind: the spools keep the kinds of the commands they
   // hold, so a replayed command's name is not classified again.
   bool produce(toolpath::Command& out, CommandKind& kind);
-  bool collect();        // reads the whole input; false when it is structured (pass through)
+  // Reads the whole input; false when it is structured (pass through). A forecast keeps no bodies:
+  // each job's head (its @start_of_job and opening tool changes) follows its marker in main_.
+  bool collect();
   void assign_labels();
   bool next_main(toolpath::Command& out, CommandKind& kind);
   bool next_body(toolpath::Command& out, CommandKind& kind);
   bool next_points(toolpath::Command& out, CommandKind& kind);
+  bool next_live(toolpath::Command& out, CommandKind& kind);
+  void expect_forecast(const toolpath::Command& c);  // the next command of main_, or ForecastMismatch
+  void end_live();
   bool pop_queue(toolpath::Command& out, CommandKind& kind);  // false when the queue is empty
   bool start_next_procedure();
   void call(toolpath::Command& out, std::int64_t label, const toolpath::Command* job);
@@ -90,6 +112,26 @@ private:
   bool bodies_sent_ = false;
   toolpath::Command end_of_file_;
   bool has_end_of_file_ = false;
+  // Two passes: forecasting_ in the first; in the second, the bodies stream in (Phase::Live).
+  bool forecasting_ = false;
+  bool forecast_ = false;
+  bool live_in_job_ = false;
+  bool live_leading_ = false;   // no body command of the job yet
+  std::size_t live_job_ = 0;    // jobs whose body has started
+  int live_tools_ = 0;          // opening tool changes of the job still to check
+  Cycle live_cycle_;
+  bool live_in_cycle_ = false;
+  toolpath::Command expected_;  // scratch for expect_forecast
+};
+
+// What the first pass found (ProcedureGeneration::forecast); handed to the second pass.
+class JobForecast {
+private:
+  friend class ProcedureGeneration;
+  std::optional<CommandSpool> main;
+  std::vector<ProcedureGeneration::Job> jobs;
+  std::vector<ProcedureGeneration::Cycle> cycles;
+  std::int64_t last_label = 0;
 };
 
 }  // namespace prp

@@ -2,6 +2,8 @@
 // under gen_procs Y and C with and without drill_proc; a structured toolpath passes unchanged.
 #include <gtest/gtest.h>
 
+#include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -61,9 +63,12 @@ std::string describe(const Command& c) {
   return s;
 }
 
+prp::MachineParameters machine(const std::string& settings) {
+  return prp::load_source("@pre_processor\n" + settings + "proc_num_dflt = 7\nendp\n", "g.prp", prp::Units::Metric);
+}
+
 std::vector<std::string> run(const std::string& settings, std::vector<Command> in) {
-  auto params = prp::load_source("@pre_processor\n" + settings + "proc_num_dflt = 7\nendp\n", "g.prp",
-                                 prp::Units::Metric);
+  auto params = machine(settings);
   ListSource source(std::move(in));
   prp::ProcedureGeneration filter(source, params);
   std::vector<std::string> out;
@@ -208,6 +213,189 @@ TEST(Generation, Errors) {
   EXPECT_EQ(error_of("gen_procs = Y\n", mixed),
             "command 21 (@call_proc): the toolpath mixes inline jobs with procedures or loops, so gen_procs cannot "
             "restructure it");
+}
+
+// Procedures in two passes: a forecast from the skim of the job (its basic motions inside jobs
+// left out, as TraceReader::skim_job_motions() reads it), then the whole job streamed against it.
+// Wherever the forecast is taken, the commands must be those of one pass, field for field.
+
+bool named(const Command& c, const char* name) { return toolpath::iequals(c.name, name); }
+
+std::vector<Command> skim(const std::vector<Command>& in) {
+  std::vector<Command> kept;
+  bool in_job = false, leading = false;
+  for (const Command& c : in) {
+    if (in_job && !leading && (named(c, "@line") || named(c, "@arc") || named(c, "@rapid_move"))) continue;
+    kept.push_back(c);
+    if (named(c, "@start_of_job")) in_job = leading = true;
+    else if (named(c, "@end_of_job")) in_job = leading = false;
+    else if (!named(c, "@change_tool")) leading = false;
+  }
+  return kept;
+}
+
+std::vector<Command> one_pass(const std::string& settings, const std::vector<Command>& in) {
+  auto params = machine(settings);
+  ListSource source(in);
+  prp::ProcedureGeneration filter(source, params);
+  return drain(filter);
+}
+
+// The second pass over `in` with the forecast of `forecast_from`; nullopt when there is none.
+std::optional<std::vector<Command>> two_passes(const std::string& settings, const std::vector<Command>& forecast_from,
+                                               const std::vector<Command>& in) {
+  auto params = machine(settings);
+  ListSource skimmed(skim(forecast_from));
+  auto forecast = prp::ProcedureGeneration::forecast(skimmed, params);
+  if (!forecast) return std::nullopt;
+  ListSource source(in);
+  prp::ProcedureGeneration filter(source, params, std::move(*forecast));
+  return drain(filter);
+}
+
+std::vector<Command> numbered(std::vector<Command> in) {
+  for (std::size_t i = 0; i < in.size(); ++i) in[i].index = i;
+  return in;
+}
+
+std::vector<Command> edited(void (*edit)(std::vector<Command>&)) {
+  auto in = flat_job();
+  edit(in);
+  return numbered(std::move(in));
+}
+
+struct TwoPassCase {
+  const char* name;
+  const char* settings;
+  std::vector<Command> in;
+  bool forecast;  // whether the job may be done in two passes
+};
+
+std::vector<TwoPassCase> two_pass_cases() {
+  return {
+      {"EveryJob", "gen_procs = Y\ndrill_proc = N\n", flat_job(), true},
+      {"SharedPointsNeedOnePass", "gen_procs = Y\ndrill_proc = Y\n", flat_job(), false},
+      {"LeafProcedures", "gen_procs = C\ndrill_proc = N\n", flat_job(), true},
+      {"InlineJobsNeedOnePass", "gen_procs = C\ndrill_proc = Y\n", flat_job(), false},
+      {"ToolChangeBeforeTheJob", "gen_procs = Y\n", edited([](auto& in) {
+         std::swap(in[3], in[4]);
+         std::swap(in[8], in[9]);
+       }), true},
+      {"PointsNotShared", "gen_procs = Y\ndrill_proc = Y\n", edited([](auto& in) { in[18].set("xpos", num(21)); }), true},
+      {"NoEndOfFile", "gen_procs = Y\n", edited([](auto& in) { in.pop_back(); }), true},
+      {"EndsInsideAJob", "gen_procs = Y\n", edited([](auto& in) { in.resize(7); }), true},
+      {"EndsRightAfterAJobsToolChange", "gen_procs = Y\n", edited([](auto& in) { in.resize(10); }), true},
+      {"SomethingAfterTheEndOfFile", "gen_procs = Y\n", edited([](auto& in) { in.push_back(command("@message", {})); }),
+       false},
+      {"CommandsBetweenJobs", "gen_procs = Y\n", edited([](auto& in) {
+         in.insert(in.begin() + 8, command("@rapid_move", {{"xpos", num(50)}}));
+         in.insert(in.begin() + 8, command("@message", {{"message", text("between")}}));
+       }), true},
+      {"TwoToolChangesOpenAJob", "gen_procs = Y\n", edited([](auto& in) {
+         in.insert(in.begin() + 5, command("@change_tool", {{"tool_number", num(3)}}));
+       }), true},
+      {"ToolChangeInsideABody", "gen_procs = Y\n", edited([](auto& in) {
+         in.insert(in.begin() + 6, command("@change_tool", {{"tool_number", num(3)}}));
+       }), true},
+      {"Structured", "gen_procs = Y\n",
+       numbered({command("@start_of_file", {}), command("@call_proc", {{"label", num(1)}}), command("@end_program", {}),
+                 command("@proc", {{"label", num(1)}}), command("@line", {{"xpos", num(2)}}),
+                 command("@end_proc", {{"label", num(1)}}), command("@end_of_file", {})}),
+       false},
+      {"Empty", "gen_procs = Y\n", {}, true},
+  };
+}
+
+TEST(GenerationInTwoPasses, SameCommandsAsOnePass) {
+  for (const TwoPassCase& c : two_pass_cases()) {
+    SCOPED_TRACE(c.name);
+    const auto two = two_passes(c.settings, c.in, c.in);
+    ASSERT_EQ(two.has_value(), c.forecast);
+    if (!two) continue;
+    const auto one = one_pass(c.settings, c.in);
+    std::vector<std::string> a, b;
+    for (const auto& x : one) a.push_back(describe(x));
+    for (const auto& x : *two) b.push_back(describe(x));
+    EXPECT_EQ(b, a);
+    EXPECT_TRUE(*two == one);  // every field, not only what describe() shows
+  }
+}
+
+// Random flat toolpaths: jobs with and without opening tool changes, motions, drill cycles over a
+// few holes (so that some cycles share their points), commands between jobs.
+std::vector<Command> random_toolpath(std::mt19937& rng) {
+  std::vector<Command> in{command("@start_of_file", {{"program_number", num(1)}}), command("@start_program", {})};
+  const int jobs = static_cast<int>(rng() % 5);
+  for (int j = 0; j < jobs; ++j) {
+    if (rng() % 3 == 0) in.push_back(command("@rapid_move", {{"xpos", num(rng() % 9)}}));
+    if (rng() % 4 == 0) in.push_back(command("@change_tool", {{"tool_number", num(rng() % 3)}}));
+    in.push_back(command("@start_of_job", {{"job_name", text(rng() % 2 ? "A" : "B")}}));
+    for (int t = static_cast<int>(rng() % 3); t > 0; --t) in.push_back(command("@change_tool", {{"tool_number", num(rng() % 3)}}));
+    for (int b = static_cast<int>(rng() % 8); b > 0; --b) {
+      switch (rng() % 5) {
+        case 0: in.push_back(command("@line", {{"xpos", num(rng() % 9)}})); break;
+        case 1: in.push_back(command("@arc", {{"xpos", num(rng() % 9)}})); break;
+        case 2: in.push_back(command("@rapid_move", {{"xpos", num(rng() % 9)}})); break;
+        case 3: in.push_back(command("@change_tool", {{"tool_number", num(rng() % 3)}})); break;
+        default:
+          in.push_back(command("@drill", {{"drill_type", word("Peck")}}));
+          for (int p = 1 + static_cast<int>(rng() % 2); p > 0; --p)
+            in.push_back(command("@drill_point", {{"xpos", num(rng() % 2)}}));
+          if (rng() % 8) in.push_back(command("@end_drill", {}));
+      }
+    }
+    if (rng() % 8) in.push_back(command("@end_of_job", {}));
+  }
+  if (rng() % 4) in.push_back(command("@end_program", {}));
+  if (rng() % 4) in.push_back(command("@end_of_file", {}));
+  return numbered(std::move(in));
+}
+
+TEST(GenerationInTwoPasses, RandomToolpaths) {
+  const char* settings[] = {"gen_procs = Y\ndrill_proc = N\n", "gen_procs = Y\ndrill_proc = Y\n",
+                            "gen_procs = C\ndrill_proc = Y\n", "gen_procs = C\ndrill_proc = N\n"};
+  std::mt19937 rng(20261128);
+  int forecast = 0;
+  for (int round = 0; round < 3000; ++round) {
+    const auto in = random_toolpath(rng);
+    const char* s = settings[rng() % std::size(settings)];
+    const auto two = two_passes(s, in, in);
+    if (!two) continue;
+    ++forecast;
+    ASSERT_TRUE(*two == one_pass(s, in)) << "round " << round;
+  }
+  EXPECT_GT(forecast, 1000);  // most of them are done in two passes
+}
+
+// A job that differs from its forecast outside the bodies stops the second pass; inside a body
+// it is streamed as it comes, which is the point.
+TEST(GenerationInTwoPasses, DifferencesFromTheForecast) {
+  const std::string settings = "gen_procs = Y\n";
+  const auto base = flat_job();
+  auto mismatch = [&](void (*edit)(std::vector<Command>&)) {
+    try {
+      two_passes(settings, base, edited(edit));
+    } catch (const prp::ForecastMismatch& e) {
+      return std::string(e.what());
+    }
+    return std::string("no mismatch");
+  };
+  EXPECT_EQ(mismatch([](auto& in) { in[1].set("tool_number", num(3)); }),
+            "command #1 @def_tool where the forecast has #1 @def_tool");
+  EXPECT_EQ(mismatch([](auto& in) { in.resize(15); }), "the job ended before its forecast");
+  EXPECT_EQ(mismatch([](auto& in) {
+              const std::vector<Command> d2(in.begin() + 15, in.begin() + 21);
+              in.insert(in.begin() + 21, d2.begin(), d2.end());  // D2 once more
+            }),
+            "command #21 @start_of_job where the forecast has #21 @end_program");
+  EXPECT_EQ(mismatch([](auto& in) { in.insert(in.begin() + 5, command("@change_tool", {{"tool_number", num(1)}})); }),
+            "command #5 @change_tool: more tool changes open the job than forecast");
+  EXPECT_EQ(mismatch([](auto& in) { in[12].set("ypos", num(6)); }), "a drill cycle differs from the forecast");
+  EXPECT_EQ(mismatch([](auto& in) { in[21] = command("@proc", {{"label", num(3)}}); }),
+            "@proc in a job forecast without it");
+
+  const auto moved = edited([](auto& in) { in[6].set("xpos", num(3)); });
+  EXPECT_TRUE(*two_passes(settings, base, moved) == one_pass(settings, moved));
 }
 
 }  // namespace
