@@ -25,6 +25,7 @@
 #include "postproc/engine/structure.hpp"
 #include "toolpath/prefetch.hpp"
 #include "toolpath/short_text.hpp"
+#include "toolpath/trace_reader.hpp"
 #include "toolpath/value.hpp"
 
 namespace postproc {
@@ -69,25 +70,39 @@ std::string default_main_name(const std::string& g_file_name, const std::string&
 
 // Warnings about the stream, from the reading thread and the filters' thread: one lock keeps the
 // lines whole, and a damaged job says the first hundred things, not a million.
+// With `held`, they wait for release() (a run that may start again must not say them twice).
 class StreamWarnings {
 public:
-  StreamWarnings(std::ostream* out, std::string input) : out_(out), input_(std::move(input)) {}
+  StreamWarnings(std::ostream* out, std::string input, bool held)
+      : out_(out), input_(std::move(input)), held_(held) {}
   ~StreamWarnings() {
-    if (out_ && shown_ > kShown) *out_ << fmt::format("{}: {} more warnings not shown\n", input_, shown_ - kShown);
+    if (out_ && !held_ && shown_ > kShown) *out_ << fmt::format("{}: {} more warnings not shown\n", input_, shown_ - kShown);
   }
 
   void operator()(std::uint32_t line, const std::string& message) {
     if (!out_) return;
     std::lock_guard lock(mutex_);
     if (++shown_ > kShown) return;
-    if (line) *out_ << fmt::format("{}:{}:1: warning: {}\n", input_, line, message);
-    else *out_ << fmt::format("{}: warning: {}\n", input_, message);
+    std::string text = line ? fmt::format("{}:{}:1: warning: {}\n", input_, line, message)
+                            : fmt::format("{}: warning: {}\n", input_, message);
+    if (held_) waiting_ += text;
+    else *out_ << text;
+  }
+
+  void release() {
+    if (!out_ || !held_) return;
+    std::lock_guard lock(mutex_);
+    *out_ << waiting_;
+    waiting_.clear();
+    held_ = false;
   }
 
 private:
-  static constexpr std::size_t kShown = 100;
+  static constexpr std::size_t kShown = 100;  // also bounds what waits
   std::ostream* out_;
   std::string input_;
+  bool held_;
+  std::string waiting_;
   std::mutex mutex_;
   std::size_t shown_ = 0;
 };
@@ -154,7 +169,9 @@ public:
     }
   }
 
-  RunSummary run(toolpath::CommandSource& input) {
+  // With `two_passes`, procedure generation may take a forecast of the job (prp::forecast_jobs),
+  // and prp::ForecastMismatch may come out: the caller then runs again without.
+  RunSummary run(toolpath::CommandSource& input, bool two_passes) {
     RunSummary summary;
     sink_.command_name = "@init_post";
     guarded([&] { interpreter_.start(); });
@@ -163,7 +180,21 @@ public:
     // its own because a filter may have to take in the whole job before it hands anything on
     // (gen_procs: @start_of_file names the last subroutine label).
     StreamCommands stream(input);
-    StreamWarnings warnings(options_.warnings, options_.input_name);
+    StreamWarnings warnings(options_.warnings, options_.input_name, two_passes);
+    try {
+      run_stream(stream, summary, warnings, two_passes);
+    } catch (const prp::ForecastMismatch&) {
+      throw;  // not said: the run starts again
+    } catch (...) {
+      warnings.release();
+      throw;
+    }
+    warnings.release();
+    return summary;
+  }
+
+private:
+  void run_stream(toolpath::CommandSource& stream, RunSummary& summary, StreamWarnings& warnings, bool two_passes) {
     // Wrong values stop at their own position; a command without what it needs at its header.
     ParameterCheck checked(stream, options_.input_name,
                            [&](const toolpath::SourcePosition& at, const std::string& m) { warnings(static_cast<std::uint32_t>(at.line), m); });
@@ -174,10 +205,14 @@ public:
     machine_ = &engine_.machine(summary.units);
     retreat_.emplace(*machine_);
     refuse_procedures_without_calls();
+    std::shared_ptr<prp::JobForecast> forecast = two_passes ? forecast_jobs() : nullptr;
     toolpath::PrefetchSource read_ahead(first);
-    auto filtered = prp::build_filter_chain(*machine_, read_ahead, [&](const toolpath::Command& c, const std::string& m) {
-      warnings(c.line, fmt::format("command #{} {}: {}", c.index, c.name, m));
-    });
+    auto filtered = prp::build_filter_chain(
+        *machine_, read_ahead,
+        [&](const toolpath::Command& c, const std::string& m) {
+          warnings(c.line, fmt::format("command #{} {}: {}", c.index, c.name, m));
+        },
+        std::move(forecast));
     toolpath::PrefetchSource prefetched(*filtered);
     // Three commands in rotation: the one before (its name is prev_command), the current one and
     // the one after it (next_command, read before the current one runs): no name is copied.
@@ -208,10 +243,22 @@ public:
     guarded([&] { files_.finish_placeholders(print_file_size && interpreter_.value(*print_file_size).integer == 1); });
     if (files_.main_path().empty()) name_main_file(default_main_name(input_stem(), engine_.file_extension()));
     summary.lines = sink_.lines;
-    return summary;
   }
 
-private:
+  // The first pass of procedure generation in two passes, over a skim of the input reopened, when
+  // the PRP allows it and nothing watches the run line by line (a second run would show it twice).
+  std::shared_ptr<prp::JobForecast> forecast_jobs() const {
+    if (!options_.reopen || options_.observer || options_.posted || options_.trace || options_.trace_level >= 0 ||
+        !prp::two_passes_possible(*machine_))
+      return nullptr;
+    std::unique_ptr<toolpath::CommandSource> source = options_.reopen();
+    auto* reader = dynamic_cast<toolpath::TraceReader*>(source.get());
+    if (!reader) return nullptr;  // only a trace file can be skimmed
+    reader->skim_job_motions();
+    StreamCommands stream(*reader);
+    return prp::forecast_jobs(*machine_, stream);
+  }
+
   // What the engine needs to know about a command name, looked up once per name.
   struct CommandInfo {
     std::optional<gppl::ProcedureId> procedure;
@@ -518,9 +565,17 @@ std::vector<std::string> Engine::drill_cycle_names() const {
 }
 
 RunSummary Engine::run(toolpath::CommandSource& input, OutputFiles& output, const RunOptions& options) const {
-  Session session(*this, program_, output, options);
   try {
-    return session.run(input);
+    try {
+      Session session(*this, program_, output, options);
+      return session.run(input, true);
+    } catch (const prp::ForecastMismatch&) {
+      // The job is not what its skim forecast (docs/prp.md): everything again, in one pass.
+      output.discard();
+      std::unique_ptr<toolpath::CommandSource> again = options.reopen();
+      Session session(*this, program_, output, options);
+      return session.run(*again, false);
+    }
   } catch (const prp::StreamError& e) {
     // A command the PRP's filters cannot take: point at its header in the input.
     const std::string what = fmt::format("command #{} {}: {}", e.command_index(), e.command_name(), e.message());

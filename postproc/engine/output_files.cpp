@@ -65,6 +65,26 @@ OutputFiles::~OutputFiles() {
   fs::remove_all(temp_dir_, ignored);
 }
 
+void OutputFiles::discard() {
+  buffered_ = 0;
+  for (auto& e : entries_) {
+    if (e.file) std::fclose(e.file);
+    e.file = nullptr;
+    std::error_code ignored;
+    fs::remove(e.temp_path, ignored);
+  }
+  entries_.clear();
+  current_ = 0;
+  next_slot_ = 0;
+  unwritten_slots_ = 0;
+  open_slots_.clear();
+  early_slots_.clear();
+  oversize_slots_.clear();
+  break_taken_ = false;
+  create("");
+  open_handle(entries_.front(), "wb");
+}
+
 void OutputFiles::set_main_path(fs::path path) { entries_.front().final_path = std::move(path); }
 
 std::size_t OutputFiles::find(std::string_view name) const {

@@ -63,6 +63,9 @@ public:
   // rewritten without their framing; with `file_size` (`print_file_size = 1`), each `$$file_size$$`
   // becomes that file's final size in bytes (line ends included). Streams, two passes at most.
   void finish_placeholders(bool file_size);
+  // Forgets everything written: the files are as they were when this was made (a run that starts
+  // again from the beginning).
+  void discard();
   // Moves every file onto its final name and removes the files the run deleted. Returns the paths written.
   std::vector<std::filesystem::path> commit();
   // Writes every file, in the order they were created, to `out`; when there are several, each starts
