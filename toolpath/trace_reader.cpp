@@ -161,25 +161,65 @@ void TraceReader::begin_command(Command& out) {
 // deeper than the stream, whose header has the level-5 layout `(depth)@name   ==>` (the name cannot
 // go on below). Any other header is kept and read in full, which is always right.
 bool TraceReader::skipped_in_skim(std::string_view h) const {
-  if (h.front() != '(') return false;
-  std::size_t j = 1;
+  // The line end ('\n', '\r' or '\0') follows h in memory: the scans stop there.
+  const char* p = h.data();
+  const char* const end = p + h.size();
+  if (*p != '(') return false;
+  const char* const digits = ++p;
   unsigned depth = 0;
-  while (j < h.size() && j < 10 && is_digit(h[j])) depth = depth * 10 + static_cast<unsigned>(h[j++] - '0');
-  if (j == 1 || h.substr(j, 2) != ")@") return false;
-  const std::size_t name = j + 1;
-  const std::size_t after_name = name + 1 + ident_length(h.substr(name + 1));
-  const std::size_t arrow = skip_blanks(h, after_name);
-  if (arrow == after_name || h.substr(arrow, 3) != "==>") return false;
+  while (is_digit(*p) && p - digits < 9) depth = depth * 10 + static_cast<unsigned>(*p++ - '0');
+  if (p == digits || p[0] != ')' || p[1] != '@') return false;  // p[1]: at most the line end
+  const char* const name = p + 1;
+  p += 2;
+  while (is_ident_char(*p)) ++p;
+  const char* const after_name = p;
+  p = skip_terminated_blanks(p, end);
+  if (p == after_name || end - p < 3 || p[0] != '=' || p[1] != '=' || p[2] != '>') return false;
   if (depth >= 2) return true;
   if (!in_job_ || job_leading_) return false;
-  const std::string_view n = h.substr(name, after_name - name);
-  return iequals(n, "@line") || iequals(n, "@arc") || iequals(n, "@rapid_move");
+  const std::string_view n(name, static_cast<std::size_t>(after_name - name));
+  switch (n.size()) {
+    case 4: return iequals(n, "@arc");
+    case 5: return iequals(n, "@line");
+    case 11: return iequals(n, "@rapid_move");
+    default: return false;
+  }
+}
+
+// The skim's fast path: whole lines of the chunk that it leaves out, straight from the chunk. A
+// line that is not a header (the first byte after its blanks is neither `@` nor `(`) belongs to a
+// skipped command; a header is read as skipped_in_skim reads it. It stops before a line that
+// goes on in the next chunk, a header to keep, and anything else the general loop must look at.
+void TraceReader::skip_in_chunk() {
+  const char* p = buffer_.data() + buffer_pos_;
+  const char* const end = buffer_.data() + buffer_.size();
+  std::size_t lines = 0, skipped = 0;
+  for (;;) {
+    const char* const nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+    if (!nl) break;
+    const char* q = skip_terminated_blanks(p, nl);
+    if (*q == '(' && q == p) {
+      if (!skipped_in_skim({p, static_cast<std::size_t>(nl - p)})) break;
+      ++skipped;
+    } else if (*q == '(' || *q == '@') {
+      break;
+    }
+    ++lines;
+    p = nl + 1;
+  }
+  if (lines == 0) return;
+  buffer_pos_ = static_cast<std::size_t>(p - buffer_.data());
+  header_ahead_ = false;
+  line_number_ += lines;
+  line32_ = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
+  next_index_ += skipped;
 }
 
 // Puts the header of the next command a skim keeps in line_ (have_line_), counting the ones it
 // skips; false at the end of the input.
 bool TraceReader::skim_to_kept_header() {
   for (;; have_line_ = false) {
+    if (!have_line_ && seen_header_) skip_in_chunk();
     if (!have_line_ && !read_line()) return false;
     const std::size_t i = skip_blanks(line_, 0);
     if (i == line_.size() || line_[i] == ';') continue;

@@ -50,6 +50,7 @@ public:
 private:
   bool read_line();
   bool skim_to_kept_header();
+  void skip_in_chunk();
   bool skipped_in_skim(std::string_view header) const;
   void follow_job(const Command& kept);
   void begin_command(Command& out);

@@ -96,8 +96,49 @@ feed : 400.0
 
 }  // namespace
 
+// The skim of a first pass (TraceReader::skim_job_motions) gives the full read's commands, each
+// as the full read gives it, leaving out only deeper commands and basic motions.
+void check_skim(const std::string& text) {
+  auto read = [&](bool skim) {
+    std::istringstream in(text);
+    toolpath::TraceReader reader(in, "fuzz.trace");
+    if (skim) reader.skim_job_motions();
+    std::vector<toolpath::Command> all;
+    toolpath::Command c;
+    while (reader.next(c)) all.push_back(c);
+    return all;
+  };
+  std::vector<toolpath::Command> full, skimmed;
+  try {
+    full = read(false);
+  } catch (const toolpath::InputError&) {
+    return;
+  }
+  try {
+    skimmed = read(true);
+  } catch (const toolpath::InputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    broken("the skim fails where the full read does not");
+  }
+  std::size_t at = 0;
+  auto left_out_until = [&](std::size_t index) {
+    for (; at < full.size() && full[at].index != index; ++at) {
+      const std::string_view n = full[at].name;
+      const bool motion = toolpath::iequals(n, "@line") || toolpath::iequals(n, "@arc") || toolpath::iequals(n, "@rapid_move");
+      if (full[at].is_stream_command() && !motion) broken("the skim left out a command it must keep");
+    }
+  };
+  for (const toolpath::Command& c : skimmed) {
+    left_out_until(c.index);
+    if (at == full.size() || !(full[at] == c) || full[at].line != c.line) broken("the skim read a command otherwise");
+    ++at;
+  }
+  left_out_until(static_cast<std::size_t>(-1));
+}
+
 void trace_reader(std::string_view data) {
   const std::string text(data);
+  check_skim(text);
   std::vector<toolpath::Command> first;
   try {
     first = read_all(text);

@@ -9,7 +9,7 @@
 
 namespace fuzz {
 
-void trace_reader(std::string_view data);    // read, check the catalogue types, write, read back the same
+void trace_reader(std::string_view data);    // read, check the catalogue types, write, read back the same; skim
 void gppl_check(std::string_view data);      // compile a post
 void gppl_run(std::string_view data);        // compile a post and run it on a small job, bounded
 void display_format(std::string_view data);  // parse a display format, apply it to a few values
