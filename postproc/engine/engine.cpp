@@ -251,7 +251,12 @@ private:
     if (!options_.reopen || options_.observer || options_.posted || options_.trace || options_.trace_level >= 0 ||
         !prp::two_passes_possible(*machine_))
       return nullptr;
-    std::unique_ptr<toolpath::CommandSource> source = options_.reopen();
+    std::unique_ptr<toolpath::CommandSource> source;
+    try {
+      source = options_.reopen();
+    } catch (const std::exception&) {
+      return nullptr;  // gone since it was opened: one pass, on what was opened
+    }
     auto* reader = dynamic_cast<toolpath::TraceReader*>(source.get());
     if (!reader) return nullptr;  // only a trace file can be skimmed
     reader->skim_job_motions();

@@ -156,10 +156,7 @@ bool ProcedureGeneration::collect() {
     }
     if (!in_job) {
       if (c.is_stream_command() && kind == K::start_of_job) {
-        job = Job{};
-        job.tool_number = current_tool;
-        job.index = c.index;
-        job.first_cycle = cycles_.size();
+        job = Job{.index = c.index, .first_cycle = cycles_.size(), .label = std::nullopt, .tool_number = current_tool};
         toolpath::Command marker;
         marker.name = kJobMarker;
         marker.index = jobs_.size();
