@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "postproc/engine/engine.hpp"
+#include "prp/prp.hpp"
 #include "toolpath/trace_reader.hpp"
 
 namespace {
@@ -74,15 +75,15 @@ protected:
 
   // Posts `job` with the shipped Fanuc post. Each reopen of the input gives the next of `reopens`
   // (the last one again when they run out); none: the engine cannot reopen it (one pass).
-  Posted post(const std::string& job, const std::vector<std::string>& reopens) {
+  Posted post(const std::string& job, const std::vector<std::string>& reopens, const std::string& machine = "fanuc") {
     std::vector<fs::path> files;
     for (std::size_t i = 0; i < reopens.size(); ++i) {
       files.push_back(dir / ("reopen" + std::to_string(i) + ".trace"));
       std::ofstream(files.back(), std::ios::binary) << reopens[i];
     }
     postproc::EngineOptions engine_options;
-    engine_options.post = "../machines/fanuc/fanuc.gpp";
-    engine_options.prp = "../machines/fanuc/fanuc.prp";
+    engine_options.post = "../machines/" + machine + "/" + machine + ".gpp";
+    engine_options.prp = "../machines/" + machine + "/" + machine + ".prp";
     postproc::Engine engine(engine_options);
     std::istringstream in(job);
     toolpath::TraceReader reader(in, "job.trace");
@@ -141,6 +142,66 @@ TEST_F(TwoPasses, RunStartsAgainWhenTheJobIsNotItsForecast) {
   EXPECT_EQ(again.reopened, 2);  // the skim, then the job again
   EXPECT_EQ(again.nc, one.nc);
   EXPECT_EQ(again.warnings, one.warnings);
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Depth 0 and 1 only, as the engine hands the skim to the forecast.
+class StreamOnly final : public toolpath::CommandSource {
+public:
+  explicit StreamOnly(toolpath::CommandSource& inner) : inner_(inner) {}
+  bool next(toolpath::Command& out) override {
+    while (inner_.next(out))
+      if (out.is_stream_command()) return true;
+    return false;
+  }
+
+private:
+  toolpath::CommandSource& inner_;
+};
+
+// Every example job through every shipped post whose PRP generates procedures: two passes (where
+// the skim allows them) post what one pass posts, and fail where it fails.
+TEST_F(TwoPasses, ShippedPostsOnTheExampleJobs) {
+  const std::vector<std::string> jobs{"../docs/examples/drill-cycles.trace",   "../docs/examples/mill-turn-job.trace",
+                                      "../docs/examples/planes-helix.trace",   "../docs/examples/sample-job.trace",
+                                      "../docs/examples/subroutine-loops.trace", "../docs/examples/turning-job.trace",
+                                      "../docs/examples/turning-passes.trace", "../docs/examples/wire-edm-job.trace",
+                                      "golden/fanuc-sample/job.trace",         "golden/solidcam-fanuc/toolpath.trace"};
+  int forecast = 0, posted = 0;
+  for (const std::string machine : {"fanuc", "linuxcnc", "mill-turn", "sinumerik", "wire-edm"}) {
+    const auto params = prp::load_file("../machines/" + machine + "/" + machine + ".prp", prp::Units::Metric);
+    for (const std::string& path : jobs) {
+      SCOPED_TRACE(machine + " " + path);
+      const std::string job = slurp(path);
+      ASSERT_FALSE(job.empty());
+      auto outcome = [&](const std::vector<std::string>& reopens) {
+        try {
+          return post(job, reopens, machine);
+        } catch (const std::exception& e) {
+          return Posted{"error", e.what(), 0};
+        }
+      };
+      const Posted one = outcome({}), two = outcome({job});
+      EXPECT_EQ(two.nc, one.nc);
+      if (one.nc != "error") {
+        ++posted;
+        EXPECT_EQ(two.warnings, one.warnings);
+      }
+      std::istringstream in(job);
+      toolpath::TraceReader skim(in, path);
+      skim.skim_job_motions();
+      StreamOnly stream(skim);
+      if (prp::forecast_jobs(params, stream)) ++forecast;
+    }
+  }
+  EXPECT_GE(posted, 40);    // of 50 (41 when written): some jobs need a machine the post is not for
+  EXPECT_GE(forecast, 20);  // (21 when written) the flat jobs under the PRPs without motion-bound filters
 }
 
 }  // namespace
