@@ -89,8 +89,9 @@ struct RunOptions {
   // Called with each command as its procedure is about to run: after the PRP filters and with the
   // structure the engine completes (`postproc verify` models the motion from these).
   std::function<void(const toolpath::Command& command)> posted;
-  // Reopens the input from its start, for the one case where the engine must look ahead over the
-  // whole stream: a @start_of_file without `first_user_proc` (docs/engine.md). May be empty.
+  // Reopens the input from its start, where the engine must look ahead over the whole stream: a
+  // @start_of_file without `first_user_proc` (docs/engine.md), and procedures generated in two
+  // passes (a skim of a trace file first, docs/prp.md). May be empty: then one pass.
   std::function<std::unique_ptr<toolpath::CommandSource>()> reopen;
 };
 
