@@ -31,12 +31,6 @@ std::string Cursor::ident() {
   return std::string(text.substr(b, i - b));
 }
 
-std::string_view Cursor::digits() {
-  const std::size_t b = i;
-  while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;  // std::isdigit is a call per byte
-  return text.substr(b, i - b);
-}
-
 std::string Cursor::keyword() {
   skip();
   std::string out;
@@ -64,12 +58,14 @@ bool plain_number(const char* p, std::size_t i, std::size_t n, double& value, st
 
 }  // namespace
 
+bool Cursor::plain_number(double& value) { return ncmodel::plain_number(text.data(), i, text.size(), value, i); }
+
 double Cursor::number() {
   skip();
   const std::size_t b = i;
   const char* const p = text.data();
   const std::size_t n = text.size();
-  if (double v; plain_number(p, i, n, v, i)) return v;
+  if (double v; ncmodel::plain_number(p, i, n, v, i)) return v;
   // Any other form: signs, leading zeros, long runs of digits, errors.
   const bool negative = i < n && p[i] == '-';
   if (i < n && (p[i] == '+' || p[i] == '-')) ++i;

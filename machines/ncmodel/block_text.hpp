@@ -2,6 +2,7 @@
 // over it, numbers read strictly, and the error that makes a reader skip the block.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -80,11 +81,31 @@ struct Cursor {
   bool eat(std::string_view s);
   std::string ident();    // a letter or _, then letters, digits and _, as written
   std::string keyword();  // letters only, lower case
-  std::string_view digits();  // a run of digits where the cursor is (no blanks skipped); may be empty
+  std::string_view digits() {  // a run of digits where the cursor is (no blanks skipped); may be empty
+    const std::size_t b = i;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;  // std::isdigit is a call per byte
+    return text.substr(b, i - b);
+  }
   // [+|-]digits[.digits]: a finite number, or BlockError ("expected a number", "malformed number",
   // "number out of range").
   double number();
+  // number()'s shortcut where the cursor is, no blanks skipped: a plain `[-]digits[.digits]` of one
+  // to fifteen digits, not followed by another point. Its value (as number() reads it) and true, the
+  // cursor after it; false, the cursor unmoved, for anything else (which number() then reads or
+  // rejects). The readers' word loops call it first.
+  bool plain_number(double& value);
 };
+
+// std::round's value (halves away from zero), except that a result of zero may be +0 where
+// std::round gives -0: for callers that make it an integer or drop the sign of a zero. Without a
+// libm call below 2^51.
+inline double round_half_away(double v) {
+  if (!(std::abs(v) < 0x1p51)) return std::round(v);  // large, infinite or NaN
+  constexpr double kShift = 6755399441055744.0;  // 1.5 * 2^52: adding it rounds to an integer, halves to even
+  double r = (v + kShift) - kShift;
+  if (std::abs(v - r) == 0.5) r = v + std::copysign(0.5, v);  // a half: away from zero (exact here)
+  return r;
+}
 
 // A count, number or code as an integer; beyond a billion (or not a number) it is a BlockError at
 // `column`, never a conversion the language leaves undefined.
