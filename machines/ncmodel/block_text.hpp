@@ -20,7 +20,8 @@ struct BlockError {
 // letters, as std::isalpha in the "C" locale the program runs in, without a library call per byte.
 inline bool is_letter(char c) { return (c | 0x20) >= 'a' && (c | 0x20) <= 'z'; }
 inline bool ident_start(char c) { return is_letter(c) || c == '_'; }
-inline bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9'); }
+inline bool is_digit(char c) { return c >= '0' && c <= '9'; }  // std::isdigit is a call
+inline bool ident_char(char c) { return ident_start(c) || is_digit(c); }
 
 // A plain decimal `[-]digits[.digits]` at [p, end), by loops of its own: the readers' shortcut for
 // the usual number (PikoCNC's lexer, Cursor::number). Only the sign, the digits and one point are
