@@ -362,12 +362,11 @@ struct SinumerikReader::Impl {
 
   // ---------------------------------------------------------------- one block
   static std::string_view strip_comment(std::string_view line) {
-    if (line.empty()) return line;
-    // Without a text in quotes the comment starts at the first `;`: memchr, not a loop over every byte.
-    if (!std::memchr(line.data(), '"', line.size())) {
-      const void* semicolon = std::memchr(line.data(), ';', line.size());
-      return semicolon ? line.substr(0, static_cast<std::size_t>(static_cast<const char*>(semicolon) - line.data())) : line;
-    }
+    // A `;` before any `"` starts the comment; without either the line is all block. One scan, not a
+    // loop over every byte.
+    const std::size_t first = ncmodel::find_either(line.data(), line.size(), '"', ';');
+    if (first == line.size()) return line;
+    if (line[first] == ';') return line.substr(0, first);
     bool quoted = false;
     for (std::size_t i = 0; i < line.size(); ++i) {
       if (line[i] == '"') quoted = !quoted;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <random>
 #include <string>
 
@@ -136,6 +137,32 @@ TEST(BlockText, RoundHalfAwayAsStdRound) {
     const double v = std::ldexp(static_cast<double>(rng() % (1u << 20)) / (1u << 20), scale) * (rng() % 2 ? 1 : -1);
     same(v);
     same(std::round(v * 2) / 2);  // a half (or whole) number
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// find_either against a byte loop: runs of every length up to 80 at every alignment, with neither
+// byte, one, or both at random places (in the 16-byte blocks, in the overlapping last one, at the
+// ends). Each run is copied to a buffer of its own size, so that a read past it is an ASan error.
+TEST(BlockText, FindEitherAsALoop) {
+  std::mt19937_64 rng(25);
+  for (int n = 0; n < 200000; ++n) {
+    const std::size_t size = rng() % 81;
+    std::string text(size, ' ');
+    for (char& c : text) c = "ab\n\r(;\"xyz 0123"[rng() % 15];
+    const char a = "\n(\"x"[rng() % 4], b = "\r;;y"[rng() % 4];
+    if (rng() % 2)  // mostly neither
+      for (char& c : text)
+        if (c == a || c == b) c = '.';
+    if (size > 0 && rng() % 4 == 0) text[rng() % size] = rng() % 2 ? a : b;
+    const auto copy = std::make_unique<char[]>(size);
+    std::copy(text.begin(), text.end(), copy.get());
+    std::size_t expected = 0;
+    while (expected < size && text[expected] != a && text[expected] != b) ++expected;
+    ASSERT_EQ(ncmodel::find_either(copy.get(), size, a, b), expected) << text;
   }
 }
 
