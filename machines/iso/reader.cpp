@@ -432,15 +432,21 @@ struct IsoReader::Impl {
       c.i = save;
     }
     if ((rules.macro_b || rules.o_words) && c.peek() == '#') return macro_assign(c);
-    Words& words = words_;  // reused: no allocation per block
+    read_words(c);
+    execute(words_);
+  }
+
+  // The words of a block into words_ (reused: no allocation per block).
+  void read_words(Cursor& c) {
+    Words& words = words_;
     words.clear();
     for (;;) {
       c.skip();
-      if (c.i >= c.text.size() || c.text[c.i] == '\0') break;  // as peek() == '\0': a NUL ends the words
+      if (c.i >= c.text.size() || c.text[c.i] == '\0') return;  // as peek() == '\0': a NUL ends the words
       const std::size_t col = c.column();
       const char ch = c.text[c.i];
       const char upper = static_cast<char>(ch & ~0x20);  // ASCII letters only
-      if (upper < 'A' || upper > 'Z') throw BlockError{col, fmt::format("unexpected `{}`", ch)};
+      if (upper < 'A' || upper > 'Z') unexpected(col, ch);
       ++c.i;
       // The usual word, a letter and its number (X12.5, G1, Y-3.25): number()'s shortcut, which
       // gives what value() would. Anything else (blanks, #n, [..], a function) through value().
@@ -448,7 +454,9 @@ struct IsoReader::Impl {
       if (!c.plain_number(v)) v = value(c);
       words.add({upper, v, col});
     }
-    execute(words);
+  }
+  [[noreturn, gnu::cold]] static void unexpected(std::size_t column, char ch) {
+    throw BlockError{column, fmt::format("unexpected `{}`", ch)};
   }
 
   // ---------------------------------------------------------------- macro B and o-words
@@ -509,10 +517,15 @@ struct IsoReader::Impl {
 
   // A block-delete `/` (the block is executed: the switch is off) and the N number a block may open with.
   static void skip_block_number(Cursor& c) {
-    if (c.peek() == '/') ++c.i;
-    if (c.peek() != 'N' && c.peek() != 'n') return;
-    const std::size_t save = c.i++;
-    if (c.digits().empty()) c.i = save;  // not a number: a word of the block
+    char ch = c.peek();
+    if (ch == '/') {
+      ++c.i;
+      ch = c.peek();
+    }
+    if (ch != 'N' && ch != 'n') return;
+    std::size_t end = c.i + 1;
+    while (end < c.text.size() && ncmodel::is_digit(c.text[end])) ++end;
+    if (end > c.i + 1) c.i = end;  // else not a number: a word of the block
   }
 
   // How a block opens, lower case, the block number left out: "end1" (END1), "o101 endrepeat"

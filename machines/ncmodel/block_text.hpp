@@ -88,6 +88,10 @@ inline PlainDecimal read_plain_decimal(const char* p, const char* end) {
   return d;
 }
 
+// 10^0 to 10^15, exact doubles: a decimal of up to fifteen digits is its digits over one of them.
+inline constexpr double kPowersOfTen[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                          1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+
 struct Cursor {
   std::string_view text;
   std::size_t i = 0;
@@ -120,8 +124,19 @@ struct Cursor {
   // number()'s shortcut where the cursor is, no blanks skipped: a plain `[-]digits[.digits]` of one
   // to fifteen digits, not followed by another point. Its value (as number() reads it) and true, the
   // cursor after it; false, the cursor unmoved, for anything else (which number() then reads or
-  // rejects). The readers' word loops call it first.
-  bool plain_number(double& value);
+  // rejects). The readers' word loops call it first; inline, so that their cursor stays in registers.
+  bool plain_number(double& value) {
+    const char* const end = text.data() + text.size();
+    const PlainDecimal d = read_plain_decimal(text.data() + i, end);
+    if (d.digits() - 1 >= 15) return false;  // none (wraps around) or more than fifteen
+    if (d.end != end && *d.end == '.') return false;  // a second point: malformed, said by number()
+    // The digits as an integer over a power of ten: both exact doubles, so the quotient is
+    // correctly rounded (strtod's value).
+    const double v = static_cast<double>(d.mantissa) / kPowersOfTen[d.decimals];
+    value = d.negative ? -v : v;
+    i = static_cast<std::size_t>(d.end - text.data());
+    return true;
+  }
 };
 
 // std::round's value (halves away from zero), except that a result of zero may be +0 where
