@@ -2,6 +2,7 @@
 // over it, numbers read strictly, and the error that makes a reader skip the block.
 #pragma once
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -45,10 +46,23 @@ struct BlockError {
 
 // Sinumerik names and LinuxCNC-style words: a letter or _, then letters, digits and _. ASCII
 // letters, as std::isalpha in the "C" locale the program runs in, without a library call per byte.
-inline bool is_letter(char c) { return (c | 0x20) >= 'a' && (c | 0x20) <= 'z'; }
-inline bool ident_start(char c) { return is_letter(c) || c == '_'; }
-inline bool is_digit(char c) { return c >= '0' && c <= '9'; }  // std::isdigit is a call
-inline bool ident_char(char c) { return ident_start(c) || is_digit(c); }
+constexpr bool is_letter(char c) { return (c | 0x20) >= 'a' && (c | 0x20) <= 'z'; }
+constexpr bool is_digit(char c) { return c >= '0' && c <= '9'; }  // std::isdigit is a call
+namespace detail {
+// By byte: 1 a name's first character (a letter or _), 2 one after it (those and digits). One load
+// for the tests that the readers make on every character of a name.
+inline constexpr auto kNameChars = [] {
+  std::array<unsigned char, 256> table{};
+  for (int c = 0; c < 256; ++c) {
+    const char ch = static_cast<char>(c);
+    const bool start = is_letter(ch) || ch == '_';
+    table[static_cast<std::size_t>(c)] = static_cast<unsigned char>((start ? 1 : 0) | (start || is_digit(ch) ? 2 : 0));
+  }
+  return table;
+}();
+}  // namespace detail
+inline bool ident_start(char c) { return (detail::kNameChars[static_cast<unsigned char>(c)] & 1) != 0; }
+inline bool ident_char(char c) { return (detail::kNameChars[static_cast<unsigned char>(c)] & 2) != 0; }
 
 // A plain decimal `[-]digits[.digits]` at [p, end), by loops of its own: the readers' shortcut for
 // the usual number (PikoCNC's lexer, Cursor::number). Only the sign, the digits and one point are

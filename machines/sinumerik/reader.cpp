@@ -377,8 +377,10 @@ struct SinumerikReader::Impl {
 
   // Parses `text` (comment stripped) into `b`; labels are registered by the caller.
   void parse(Cursor& c, Block& b) {
-    while (!c.at_end()) {
-      const char ch = c.peek();
+    for (;;) {
+      c.skip();  // at_end() and peek() in one
+      if (c.i >= c.text.size()) return;
+      const char ch = c.text[c.i];
       const std::size_t col = c.column();
       if (ch == '/' && c.i == 0) {  // block skip: executed (the control's skip switch is off)
         ++c.i;

@@ -167,3 +167,18 @@ TEST(BlockText, FindEitherAsALoop) {
 }
 
 }  // namespace
+
+namespace {
+
+// The name character tests (a table) as their definitions, for every byte.
+TEST(BlockText, NameCharactersAsDefined) {
+  for (int c = 0; c < 256; ++c) {
+    const char ch = static_cast<char>(c);
+    const bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+    EXPECT_EQ(ncmodel::is_letter(ch), letter) << c;
+    EXPECT_EQ(ncmodel::ident_start(ch), letter || c == '_') << c;
+    EXPECT_EQ(ncmodel::ident_char(ch), letter || c == '_' || (c >= '0' && c <= '9')) << c;
+  }
+}
+
+}  // namespace
