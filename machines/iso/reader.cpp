@@ -398,8 +398,9 @@ struct IsoReader::Impl {
     }
     Cursor c{text, first};
     skip_block_number(c);
+    const char head = c.peek();  // what the block opens with, after its number
     // :<n>, the ISO tape code's O: a program number (Mach3 labels its subprograms so)
-    if (c.peek() == ':') {
+    if (head == ':') {
       const std::size_t col = c.column();
       ++c.i;
       whole(c.number(), col, "program number");
@@ -407,7 +408,7 @@ struct IsoReader::Impl {
       return;
     }
     // O words: a program number (Fanuc), or LinuxCNC's o-word control
-    if (c.peek() == 'O' || c.peek() == 'o') {
+    if (head == 'O' || head == 'o') {
       const std::size_t col = c.column();
       ++c.i;
       if (!std::isdigit(static_cast<unsigned char>(c.peek())))
@@ -423,7 +424,7 @@ struct IsoReader::Impl {
     }
     // WHILE and END are words of three letters or more; a block that opens with a letter and a
     // number (nearly every block) is not read as a keyword.
-    if (rules.macro_b && c.peek() != '\0' && c.i + 1 < c.text.size() && ncmodel::is_letter(c.text[c.i]) &&
+    if (rules.macro_b && head != '\0' && c.i + 1 < c.text.size() && ncmodel::is_letter(c.text[c.i]) &&
         ncmodel::is_letter(c.text[c.i + 1])) {
       const std::size_t save = c.i;
       const std::string word = c.keyword();
@@ -431,7 +432,7 @@ struct IsoReader::Impl {
       if (word.size() == 3 && word == "end") return macro_end(c);
       c.i = save;
     }
-    if ((rules.macro_b || rules.o_words) && c.peek() == '#') return macro_assign(c);
+    if ((rules.macro_b || rules.o_words) && head == '#') return macro_assign(c);
     read_words(c);
     execute(words_);
   }
