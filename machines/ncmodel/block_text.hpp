@@ -129,7 +129,7 @@ struct Cursor {
   std::string keyword();  // letters only, lower case
   std::string_view digits() {  // a run of digits where the cursor is (no blanks skipped); may be empty
     const std::size_t b = i;
-    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;  // std::isdigit is a call per byte
+    while (i < text.size() && is_digit(text[i])) ++i;
     return text.substr(b, i - b);
   }
   // [+|-]digits[.digits]: a finite number, or BlockError ("expected a number", "malformed number",
