@@ -48,7 +48,9 @@ std::optional<Plane> parse_plane(std::string_view name) {
 }
 
 double normalize_degrees(double degrees) {
-  double r = std::fmod(degrees, 360.0);
+  // fmod gives a value below 360 in magnitude back as it is (it is exact): no call for the angles
+  // atan2 gives and their differences.
+  double r = std::abs(degrees) < 360.0 ? degrees : std::fmod(degrees, 360.0);
   if (r < 0) r += 360.0;
   return r >= 360.0 ? 0.0 : r;
 }

@@ -51,9 +51,31 @@ std::string lower(std::string_view s) {
 
 // A word's value: a number, #n, or [expression] (macro B).
 struct Word {
-  char letter = 0;
+  char letter = 0;  // upper case
   double value = 0;
   std::size_t column = 1;
+};
+
+// The words of a block, in order, and where the first of each letter is: execute() asks for a
+// letter a dozen times a block.
+struct Words {
+  std::vector<Word> list;
+  std::array<std::uint32_t, 26> first{};  // 1 + its index in list; 0: none
+
+  void clear() {  // keeps the buffer (no allocation a block); only the letters used are reset
+    for (const Word& w : list) first[static_cast<std::size_t>(w.letter - 'A')] = 0;
+    list.clear();
+  }
+  void add(const Word& w) {
+    std::uint32_t& at = first[static_cast<std::size_t>(w.letter - 'A')];
+    if (at == 0) at = static_cast<std::uint32_t>(list.size() + 1);
+    list.push_back(w);
+  }
+  // The block's first word of `letter` (upper case), or nullptr.
+  const Word* find(char letter) const {
+    const std::uint32_t at = first[static_cast<std::size_t>(letter - 'A')];
+    return at == 0 ? nullptr : &list[at - 1];
+  }
 };
 
 }  // namespace
@@ -71,8 +93,12 @@ struct IsoReader::Impl {
   std::string name;
   std::unique_ptr<std::istream> stream;
   std::unique_ptr<ncmodel::LineReader> lines;
-  std::map<long long, ncmodel::LineReader::Mark> programs;  // O<n> lines (Fanuc), start of the line
-  std::map<std::string, ncmodel::LineReader::Mark> subs;    // o<name> sub lines (LinuxCNC)
+  // O<n> lines (Fanuc) and o<name> sub lines (LinuxCNC), their starts: found on the first M98 or
+  // call that needs one (index_labels), as most programs have none.
+  std::map<long long, ncmodel::LineReader::Mark> programs;
+  std::map<std::string, ncmodel::LineReader::Mark> subs;
+  bool labels_indexed = false;
+  ncmodel::LineReader::Mark start;  // of the program
   ncmodel::LineReader::Mark before;                         // where the line read last starts
   std::size_t current_line = 0, command_line = 0;
   toolpath::Diagnostics diagnostics;
@@ -80,7 +106,7 @@ struct IsoReader::Impl {
   std::size_t executed = 0;
   bool finished = false, started = false, percent_seen = false;
   ncmodel::MotionOut out;
-  std::vector<Word> words_;                    // of the block being executed
+  Words words_;                                // of the block being executed
   std::vector<const Word*> g_codes_, m_codes_;
 
   struct Frame {  // a subprogram being run
@@ -120,12 +146,16 @@ struct IsoReader::Impl {
   Impl(std::unique_ptr<std::istream> in, std::string n, const Rules& r, Options o)
       : rules(r), options(o), name(std::move(n)), stream(std::move(in)), diagnostics(o.max_diagnostics) {
     lines = std::make_unique<ncmodel::LineReader>(*stream, name);
-    index_labels();
+    start = lines->mark();
   }
 
-  // One pass over the program for its O numbers and o-word subs, then back to the start.
+  // One pass over the whole program for its O numbers and o-word subs, the first time one is
+  // looked up, then back to where the reading is.
   void index_labels() {
-    const ncmodel::LineReader::Mark start = lines->mark();
+    if (labels_indexed) return;
+    labels_indexed = true;
+    const ncmodel::LineReader::Mark back = lines->mark();
+    lines->seek(start);
     std::string_view text;
     for (;;) {
       const ncmodel::LineReader::Mark at = lines->mark();
@@ -142,7 +172,7 @@ struct IsoReader::Impl {
       if (head != ':' && c.keyword().rfind("sub", 0) == 0) subs.emplace(fmt::format("o{}", number), at);
       else if (!programs.count(number)) programs.emplace(number, at);
     }
-    lines->seek(start);
+    lines->seek(back);
   }
 
   void diagnose(bool error, std::size_t column, std::string message) {
@@ -195,7 +225,7 @@ struct IsoReader::Impl {
       auto it = macro.find(whole(n, col, "variable number"));
       return it == macro.end() ? 0.0 : it->second;
     }
-    if (std::isalpha(static_cast<unsigned char>(ch))) return function(c);
+    if (ncmodel::is_letter(ch)) return function(c);
     if (ch == '-') {
       ++c.i;
       return -value(c);
@@ -298,8 +328,8 @@ struct IsoReader::Impl {
   // block). A line without comments is returned as it is.
   static std::string_view strip(std::string_view line, bool& unclosed, std::string& out) {
     unclosed = false;
-    // Two memchr scans: find_first_of("(;") calls memchr on the set for every byte of the line.
-    if (!std::memchr(line.data(), '(', line.size()) && !std::memchr(line.data(), ';', line.size())) return line;
+    // One scan for both (find_first_of("(;") calls memchr on the set for every byte of the line).
+    if (ncmodel::find_either(line.data(), line.size(), '(', ';') == line.size()) return line;
     out.clear();
     for (std::size_t i = 0; i < line.size(); ++i) {
       if (line[i] == ';') break;
@@ -368,8 +398,9 @@ struct IsoReader::Impl {
     }
     Cursor c{text, first};
     skip_block_number(c);
+    const char head = c.peek();  // what the block opens with, after its number
     // :<n>, the ISO tape code's O: a program number (Mach3 labels its subprograms so)
-    if (c.peek() == ':') {
+    if (head == ':') {
       const std::size_t col = c.column();
       ++c.i;
       whole(c.number(), col, "program number");
@@ -377,7 +408,7 @@ struct IsoReader::Impl {
       return;
     }
     // O words: a program number (Fanuc), or LinuxCNC's o-word control
-    if (c.peek() == 'O' || c.peek() == 'o') {
+    if (head == 'O' || head == 'o') {
       const std::size_t col = c.column();
       ++c.i;
       if (!std::isdigit(static_cast<unsigned char>(c.peek())))
@@ -393,7 +424,7 @@ struct IsoReader::Impl {
     }
     // WHILE and END are words of three letters or more; a block that opens with a letter and a
     // number (nearly every block) is not read as a keyword.
-    if (rules.macro_b && c.peek() != '\0' && c.i + 1 < c.text.size() && ncmodel::is_letter(c.text[c.i]) &&
+    if (rules.macro_b && head != '\0' && c.i + 1 < c.text.size() && ncmodel::is_letter(c.text[c.i]) &&
         ncmodel::is_letter(c.text[c.i + 1])) {
       const std::size_t save = c.i;
       const std::string word = c.keyword();
@@ -401,18 +432,32 @@ struct IsoReader::Impl {
       if (word.size() == 3 && word == "end") return macro_end(c);
       c.i = save;
     }
-    if ((rules.macro_b || rules.o_words) && c.peek() == '#') return macro_assign(c);
-    std::vector<Word>& words = words_;  // reused: no allocation per block
+    if ((rules.macro_b || rules.o_words) && head == '#') return macro_assign(c);
+    read_words(c);
+    execute(words_);
+  }
+
+  // The words of a block into words_ (reused: no allocation per block).
+  void read_words(Cursor& c) {
+    Words& words = words_;
     words.clear();
-    while (c.peek() != '\0') {
+    for (;;) {
+      c.skip();
+      if (c.i >= c.text.size() || c.text[c.i] == '\0') return;  // as peek() == '\0': a NUL ends the words
       const std::size_t col = c.column();
-      const char ch = c.peek();
+      const char ch = c.text[c.i];
       const char upper = static_cast<char>(ch & ~0x20);  // ASCII letters only
-      if (upper < 'A' || upper > 'Z') throw BlockError{col, fmt::format("unexpected `{}`", ch)};
+      if (upper < 'A' || upper > 'Z') unexpected(col, ch);
       ++c.i;
-      words.push_back({upper, value(c), col});
+      // The usual word, a letter and its number (X12.5, G1, Y-3.25): number()'s shortcut, which
+      // gives what value() would. Anything else (blanks, #n, [..], a function) through value().
+      double v;
+      if (!c.plain_number(v)) v = value(c);
+      words.add({upper, v, col});
     }
-    execute(words);
+  }
+  [[noreturn, gnu::cold]] static void unexpected(std::size_t column, char ch) {
+    throw BlockError{column, fmt::format("unexpected `{}`", ch)};
   }
 
   // ---------------------------------------------------------------- macro B and o-words
@@ -473,10 +518,15 @@ struct IsoReader::Impl {
 
   // A block-delete `/` (the block is executed: the switch is off) and the N number a block may open with.
   static void skip_block_number(Cursor& c) {
-    if (c.peek() == '/') ++c.i;
-    if (c.peek() != 'N' && c.peek() != 'n') return;
-    const std::size_t save = c.i++;
-    if (c.digits().empty()) c.i = save;  // not a number: a word of the block
+    char ch = c.peek();
+    if (ch == '/') {
+      ++c.i;
+      ch = c.peek();
+    }
+    if (ch != 'N' && ch != 'n') return;
+    std::size_t end = c.i + 1;
+    while (end < c.text.size() && ncmodel::is_digit(c.text[end])) ++end;
+    if (end > c.i + 1) c.i = end;  // else not a number: a word of the block
   }
 
   // How a block opens, lower case, the block number left out: "end1" (END1), "o101 endrepeat"
@@ -517,6 +567,7 @@ struct IsoReader::Impl {
       return return_from_call();
     }
     if (word == "call") {
+      index_labels();
       auto it = subs.find(label);
       if (it == subs.end()) {  // LinuxCNC then looks in its subroutine folders: a machine's own routine
         warn_once(label + " call", col,
@@ -588,28 +639,22 @@ struct IsoReader::Impl {
   }
 
   // ---------------------------------------------------------------- one block of words
-  static const Word* find(const std::vector<Word>& w, char letter) {
-    for (const Word& x : w)
-      if (x.letter == letter) return &x;
-    return nullptr;
-  }
-
-  void execute(const std::vector<Word>& w) {
+  void execute(const Words& w) {
     std::vector<const Word*>& g_codes = g_codes_;
     std::vector<const Word*>& m_codes = m_codes_;
     g_codes.clear();
     m_codes.clear();
-    for (const Word& x : w) {
+    for (const Word& x : w.list) {
       if (x.letter == 'G') g_codes.push_back(&x);
       if (x.letter == 'M') m_codes.push_back(&x);
     }
-    if (const Word* f = find(w, 'F')) feed = f->value * unit();
-    if (const Word* t = find(w, 'T')) selected_tool = static_cast<double>(whole(t->value, t->column, "tool number"));
+    if (const Word* f = w.find('F')) feed = f->value * unit();
+    if (const Word* t = w.find('T')) selected_tool = static_cast<double>(whole(t->value, t->column, "tool number"));
     bool dwell = false, machine = false, motion_given = false;
     enum class Shift { None, G92, G52, Scale } shift = Shift::None;
     std::optional<int> new_cycle;
     for (const Word* g : g_codes) {
-      const long long code = whole(std::round(g->value * 10), g->column, "G code");
+      const long long code = whole(ncmodel::round_half_away(g->value * 10), g->column, "G code");
       switch (code) {
         case 0: case 10: case 20: case 30:
           motion = static_cast<int>(code / 10);
@@ -653,7 +698,7 @@ struct IsoReader::Impl {
           break;
         default:
           // Its words may not be positions (G10 L2 P1 X..): a block that has any is not guessed at.
-          if (find(w, 'X') || find(w, 'Y') || find(w, 'Z'))
+          if (w.find('X') || w.find('Y') || w.find('Z'))
             throw BlockError{g->column, fmt::format("G{:g} is not modelled, and its block has axis words", g->value)};
           warn_once(fmt::format("G{}", g->value), g->column, fmt::format("G{:g} is not modelled: ignored", g->value));
       }
@@ -667,7 +712,7 @@ struct IsoReader::Impl {
         load_tool(m->column);
       }
     }
-    if (const Word* s = find(w, 'S')) speed = s->value;
+    if (const Word* s = w.find('S')) speed = s->value;
     bool spindle_given = false;
     for (const Word* m : m_codes) {
       const long long code = whole(m->value, m->column, "M code");
@@ -676,33 +721,33 @@ struct IsoReader::Impl {
         spindle_given = true;
       }
     }
-    if (find(w, 'S') && !spindle_given) out.speed(speed);
+    if (w.find('S') && !spindle_given) out.speed(speed);
     if (dwell) {
       double seconds = 0;
-      if (const Word* p = find(w, 'P')) seconds = rules.dwell_p_in_ms ? p->value / 1000 : p->value;
-      else if (const Word* x = find(w, 'X')) seconds = x->value;
+      if (const Word* p = w.find('P')) seconds = rules.dwell_p_in_ms ? p->value / 1000 : p->value;
+      else if (const Word* x = w.find('X')) seconds = x->value;
       else throw BlockError{1, "G4 needs its time (P or X)"};
       out.dwell(seconds);
     } else if (shift == Shift::G92) {  // the position, as the program will name it from now on
       for (int a = 0; a < 3; ++a)
-        if (const Word* x = find(w, "XYZ"[a]))
+        if (const Word* x = w.find("XYZ"[a]))
           g92[a] = out.position()[a] - x->value * unit() * scale[a] - g52[a] - (a == 2 ? length_shift() : 0.0);
     } else if (shift == Shift::G52) {  // a local shift of the work frame; G52 X0 Y0 Z0 cancels it
       for (int a = 0; a < 3; ++a)
-        if (const Word* x = find(w, "XYZ"[a])) g52[a] = x->value * unit();
+        if (const Word* x = w.find("XYZ"[a])) g52[a] = x->value * unit();
     } else if (shift == Shift::Scale) {
       if (rules.scaling != Scaling::PerAxis)
         throw BlockError{1, fmt::format("{}'s G51 scaling is not modelled", rules.title)};
       for (int a = 0; a < 3; ++a)  // Mach3: the factors per axis, about the program zero
-        if (const Word* x = find(w, "XYZ"[a])) {
+        if (const Word* x = w.find("XYZ"[a])) {
           if (!(x->value > 0) && !(x->value < 0)) throw BlockError{x->column, "a scale factor of 0"};
           scale[a] = x->value;
         }
     } else if (machine) {
       std::array<std::optional<double>, 3> axes, rotary;
       for (std::size_t a = 0; a < 3; ++a) {
-        if (const Word* x = find(w, "XYZ"[a])) axes[a] = x->value * unit();
-        if (const Word* r = find(w, "ABC"[a])) rotary[a] = r->value;  // degrees, not scaled by G20
+        if (const Word* x = w.find("XYZ"[a])) axes[a] = x->value * unit();
+        if (const Word* r = w.find("ABC"[a])) rotary[a] = r->value;  // degrees, not scaled by G20
       }
       out.machine_move(axes, rotary);
     } else if (new_cycle) {
@@ -711,15 +756,15 @@ struct IsoReader::Impl {
       // Rotary axes (a 4th axis on Mach3, LinuxCNC): the angle the next move carries.
       bool rotary = false;
       for (int a = 0; a < 3; ++a)
-        if (const Word* r = find(w, "ABC"[a])) {
+        if (const Word* r = w.find("ABC"[a])) {
           const double now = out.rotary(a).value_or(0.0);
           out.set_rotary(a, absolute ? r->value : now + r->value);
           rotary = true;
         }
-      const bool axes = rotary || find(w, 'X') || find(w, 'Y') || find(w, 'Z');
-      if (motion >= 73 && cycle_defined && (find(w, 'X') || find(w, 'Y'))) {
+      const bool axes = rotary || w.find('X') || w.find('Y') || w.find('Z');
+      if (motion >= 73 && cycle_defined && (w.find('X') || w.find('Y'))) {
         position_hole(w);
-      } else if (axes || (motion_given && (find(w, 'I') || find(w, 'J') || find(w, 'K') || find(w, 'R')))) {
+      } else if (axes || (motion_given && (w.find('I') || w.find('J') || w.find('K') || w.find('R')))) {
         move(w);
       }
     }
@@ -728,9 +773,9 @@ struct IsoReader::Impl {
 
   // G43 [H<n>]: the length of tool n (H0: none; no H: the tool in the spindle, as LinuxCNC takes
   // it) applies from this block on.
-  void tool_length(const std::vector<Word>& w, std::size_t column) {
+  void tool_length(const Words& w, std::size_t column) {
     if (!options.tools) return;
-    const Word* h = find(w, 'H');
+    const Word* h = w.find('H');
     if (!h && !spindle_tool) throw BlockError{column, "G43 without H before any M6: which tool's length applies?"};
     const std::int64_t number = h ? whole(h->value, h->column, "H number") : *spindle_tool;
     applied_length = number == 0 ? 0.0 : table_length(number, h ? h->column : column, 'H');
@@ -751,14 +796,14 @@ struct IsoReader::Impl {
     return t->length * unit();
   }
 
-  Eigen::Vector3d target(const std::vector<Word>& w) const {
+  Eigen::Vector3d target(const Words& w) const {
     Eigen::Vector3d to = out.position();
     for (int a = 0; a < 3; ++a)
-      if (const Word* x = find(w, "XYZ"[a])) to[a] = absolute ? to_work(a, x->value) : to[a] + step(a, x->value);
+      if (const Word* x = w.find("XYZ"[a])) to[a] = absolute ? to_work(a, x->value) : to[a] + step(a, x->value);
     return to;
   }
 
-  void move(const std::vector<Word>& w) {
+  void move(const Words& w) {
     if (motion >= 73) motion = 1;  // not reached: a cycle's blocks are holes
     const Eigen::Vector3d to = target(w);
     if (motion == 0) return out.rapid(to);
@@ -767,7 +812,7 @@ struct IsoReader::Impl {
     const bool ccw = motion == 3;
     if (!uniform_in(plane)) throw BlockError{1, "an arc under a scale that differs in its plane is an ellipse: not modelled"};
     Eigen::Vector3d centre = out.position();
-    if (const Word* r = find(w, 'R')) {
+    if (const Word* r = w.find('R')) {
       const Eigen::Vector3d& from = out.position();
       if ((geo::in_plane(from, plane) - geo::in_plane(to, plane)).norm() < 1e-9)
         throw BlockError{r->column, "an R arc cannot be a full circle: give I J K"};
@@ -778,7 +823,7 @@ struct IsoReader::Impl {
     } else {
       bool any = false;
       for (int a = 0; a < 3; ++a)
-        if (const Word* k = find(w, "IJK"[a])) {
+        if (const Word* k = w.find("IJK"[a])) {
           any = true;
           centre[a] = absolute_centres ? to_work(static_cast<int>(a), k->value) : centre[a] + step(static_cast<int>(a), k->value);
         }
@@ -795,22 +840,22 @@ struct IsoReader::Impl {
   }
 
   // A cycle block: its words, then the first hole where the tool is (or at the block's X Y).
-  void define_cycle(int code, const std::vector<Word>& w) {
+  void define_cycle(int code, const Words& w) {
     if (!absolute) throw BlockError{1, "canned cycles in G91 are not modelled"};
     if (motion < 73 || !cycle_defined) cycle.initial = out.position().z();
     motion = code;
     cycle_defined = true;
-    if (const Word* z = find(w, 'Z')) cycle.z = to_work(2, z->value);
-    if (const Word* r = find(w, 'R')) cycle.r = to_work(2, r->value);
-    if (const Word* q = find(w, 'Q')) cycle.q = std::abs(step(2, q->value));
-    if (const Word* p = find(w, 'P')) cycle.p = rules.dwell_p_in_ms ? p->value / 1000 : p->value;
+    if (const Word* z = w.find('Z')) cycle.z = to_work(2, z->value);
+    if (const Word* r = w.find('R')) cycle.r = to_work(2, r->value);
+    if (const Word* q = w.find('Q')) cycle.q = std::abs(step(2, q->value));
+    if (const Word* p = w.find('P')) cycle.p = rules.dwell_p_in_ms ? p->value / 1000 : p->value;
     position_hole(w);
   }
 
-  void position_hole(const std::vector<Word>& w) {
+  void position_hole(const Words& w) {
     Eigen::Vector3d at = out.position();
     for (int a = 0; a < 2; ++a)
-      if (const Word* x = find(w, "XY"[a])) at[a] = absolute ? to_work(a, x->value) : at[a] + step(a, x->value);
+      if (const Word* x = w.find("XY"[a])) at[a] = absolute ? to_work(a, x->value) : at[a] + step(a, x->value);
     if ((at - out.position()).norm() > 1e-12) out.rapid(at);
     using Kind = ncmodel::MotionOut::Hole::Kind;
     ncmodel::MotionOut::Hole h;
@@ -842,19 +887,20 @@ struct IsoReader::Impl {
   }
 
   // M98, M99, M2, M30.
-  void flow(const std::vector<Word>& w, const std::vector<const Word*>& m_codes) {
+  void flow(const Words& w, const std::vector<const Word*>& m_codes) {
     for (const Word* m : m_codes) {
       const long long code = whole(m->value, m->column, "M code");
       if (code == 98) {
         if (!rules.subprograms) throw BlockError{m->column, fmt::format("{} has no subprograms (M98)", rules.title)};
-        const Word* p = find(w, 'P');
+        const Word* p = w.find('P');
         if (!p) throw BlockError{m->column, "M98 needs P, the program number"};
         long long program = whole(p->value, p->column, "program number"), times = 1;
-        if (const Word* l = find(w, 'L')) times = whole(l->value, l->column, "repeat count");
+        if (const Word* l = w.find('L')) times = whole(l->value, l->column, "repeat count");
         else if (program > 9999) {  // P<times><4-digit program>
           times = program / 10000;
           program %= 10000;
         }
+        index_labels();
         auto it = programs.find(program);
         if (it == programs.end()) throw BlockError{p->column, fmt::format("no O{} in the program", program)};
         if (times < 1) return;  // L0: not run

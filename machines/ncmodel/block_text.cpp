@@ -31,12 +31,6 @@ std::string Cursor::ident() {
   return std::string(text.substr(b, i - b));
 }
 
-std::string_view Cursor::digits() {
-  const std::size_t b = i;
-  while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;  // std::isdigit is a call per byte
-  return text.substr(b, i - b);
-}
-
 std::string Cursor::keyword() {
   skip();
   std::string out;
@@ -45,31 +39,12 @@ std::string Cursor::keyword() {
   return out;
 }
 
-namespace {
-
-constexpr double kTens[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
-
-// The usual number: [-]digits[.digits] with one to fifteen digits, not followed by another point.
-// Its value (the digits as an integer over a power of ten: both exact doubles, so the quotient is
-// correctly rounded) and its end; false for anything else.
-bool plain_number(const char* p, std::size_t i, std::size_t n, double& value, std::size_t& end) {
-  const PlainDecimal d = read_plain_decimal(p + i, p + n);
-  if (d.digits() - 1 >= 15) return false;  // none (wraps around) or more than fifteen
-  if (d.end != p + n && *d.end == '.') return false;  // a second point: malformed, said by the general loop
-  const double v = static_cast<double>(d.mantissa) / kTens[d.decimals];
-  value = d.negative ? -v : v;
-  end = static_cast<std::size_t>(d.end - p);
-  return true;
-}
-
-}  // namespace
-
 double Cursor::number() {
   skip();
+  if (double v; plain_number(v)) return v;
   const std::size_t b = i;
   const char* const p = text.data();
   const std::size_t n = text.size();
-  if (double v; plain_number(p, i, n, v, i)) return v;
   // Any other form: signs, leading zeros, long runs of digits, errors.
   const bool negative = i < n && p[i] == '-';
   if (i < n && (p[i] == '+' || p[i] == '-')) ++i;
@@ -98,7 +73,7 @@ double Cursor::number() {
   // The usual case, up to 15 significant digits and one point: the digits as an integer, divided by
   // a power of ten. Both are exact doubles, so the quotient is correctly rounded: from_chars' value.
   if (points <= 1 && count <= 15 && decimals <= 15) {
-    const double v = static_cast<double>(mantissa) / kTens[decimals < 0 ? 0 : decimals];
+    const double v = static_cast<double>(mantissa) / kPowersOfTen[decimals < 0 ? 0 : decimals];
     return negative ? -v : v;
   }
   const char* first = p + b;

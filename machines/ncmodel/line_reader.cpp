@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "machines/ncmodel/block_text.hpp"
 #include "toolpath/error.hpp"
 
 namespace ncmodel {
@@ -39,13 +40,7 @@ bool LineReader::next(std::string_view& line) {
   for (;;) {
     const char* base = buffer_.get();
     const std::size_t size = size_;
-    std::size_t end = scan;
-    while (end < size && base[end] != '\n' && base[end] != '\r') {
-      const void* nl = std::memchr(base + end, '\n', size - end);
-      const std::size_t stop = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - base) : size;
-      const void* cr = std::memchr(base + end, '\r', stop - end);
-      end = cr ? static_cast<std::size_t>(static_cast<const char*>(cr) - base) : stop;
-    }
+    const std::size_t end = scan + find_either(base + scan, size - scan, '\n', '\r');
     const bool need_more = end == size || (base[end] == '\r' && end + 1 == size);
     if (need_more && !at_eof_) {
       const std::size_t consumed = scan - pos_;

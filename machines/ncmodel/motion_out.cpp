@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "machines/ncmodel/block_text.hpp"
+#include "toolpath/short_text.hpp"
 #include "toolpath/value.hpp"
 
 namespace ncmodel {
@@ -14,16 +16,7 @@ using toolpath::Value;
 using K = toolpath::ParamKey;
 
 double clean(double v) {
-  const double scaled = v * 1e9;
-  double r;
-  if (std::abs(scaled) < 0x1p51) {
-    constexpr double kShift = 6755399441055744.0;  // 1.5 * 2^52: adding it rounds to an integer, halves to even
-    r = (scaled + kShift) - kShift;
-    if (std::abs(scaled - r) == 0.5) r = scaled + std::copysign(0.5, scaled);  // a half: away from zero (exact here)
-  } else {
-    r = std::round(scaled);
-  }
-  r /= 1e9;
+  const double r = round_half_away(v * 1e9) / 1e9;
   return r == 0 ? 0.0 : r;
 }
 
@@ -56,7 +49,9 @@ void MotionOut::add(std::string_view name) {
   const auto at = params.begin() + static_cast<std::ptrdiff_t>(fill_);
   toolpath::Parameter& p = at != params.end() ? *at : new_slot();
   ++fill_;
-  p.rename(key);
+  // A recycled slot mostly has the name already: that test inline, the renaming a call.
+  if (p.key != key || !toolpath::same_short_text(p.name, toolpath::param_name(key))) [[unlikely]]
+    p.rename(key);
   p.line = p.column = 0;
   p.value.kind = kind;
   p.value.flag = toolpath::ChangeFlag::None;

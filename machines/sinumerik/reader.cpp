@@ -110,14 +110,22 @@ struct Block {
   std::optional<std::size_t> p_column;  // a P word (repeats of the call)
   std::optional<double> p;
 
-  // Empties the block for the next line; the code lists keep their buffers (no allocation a line).
+  // Empties the block for the next line, as Block{} (every member above), member by member: the
+  // code lists keep their buffers (no allocation a line), and the texts are only tested (most
+  // blocks have none), not moved over.
   void clear() {
-    std::vector<double> keep_g = std::move(g), keep_m = std::move(m);
-    *this = Block{};
-    g = std::move(keep_g);
-    m = std::move(keep_m);
+    axes = {};
+    centre = {};
+    cr = f = s = d = tool_number = p = std::nullopt;
+    p_column.reset();
+    tool_name.reset();
+    msg.reset();
+    call.reset();
+    cycle.reset();
+    jump.reset();
     g.clear();
     m.clear();
+    supa = mcall = ret = false;
   }
 };
 
@@ -354,12 +362,11 @@ struct SinumerikReader::Impl {
 
   // ---------------------------------------------------------------- one block
   static std::string_view strip_comment(std::string_view line) {
-    if (line.empty()) return line;
-    // Without a text in quotes the comment starts at the first `;`: memchr, not a loop over every byte.
-    if (!std::memchr(line.data(), '"', line.size())) {
-      const void* semicolon = std::memchr(line.data(), ';', line.size());
-      return semicolon ? line.substr(0, static_cast<std::size_t>(static_cast<const char*>(semicolon) - line.data())) : line;
-    }
+    // A `;` before any `"` starts the comment; without either the line is all block. One scan, not a
+    // loop over every byte.
+    const std::size_t first = ncmodel::find_either(line.data(), line.size(), '"', ';');
+    if (first == line.size()) return line;
+    if (line[first] == ';') return line.substr(0, first);
     bool quoted = false;
     for (std::size_t i = 0; i < line.size(); ++i) {
       if (line[i] == '"') quoted = !quoted;
@@ -370,8 +377,10 @@ struct SinumerikReader::Impl {
 
   // Parses `text` (comment stripped) into `b`; labels are registered by the caller.
   void parse(Cursor& c, Block& b) {
-    while (!c.at_end()) {
-      const char ch = c.peek();
+    for (;;) {
+      c.skip();  // at_end() and peek() in one
+      if (c.i >= c.text.size()) return;
+      const char ch = c.text[c.i];
       const std::size_t col = c.column();
       if (ch == '/' && c.i == 0) {  // block skip: executed (the control's skip switch is off)
         ++c.i;
@@ -381,6 +390,16 @@ struct SinumerikReader::Impl {
       // An address letter directly followed by its number: X12.5, G04, M3, N10 (not R11=..., an
       // assignment to the arithmetic parameter R11).
       // ASCII tests inline, as std::isalpha and std::toupper in the "C" locale (not a call each).
+      // The usual number first: number()'s shortcut, which gives what number() would below.
+      if (ncmodel::is_letter(ch)) {
+        Cursor number{c.text, c.i + 1};
+        double v;
+        if (number.plain_number(v) && !assigns(c)) {
+          c.i = number.i;
+          address(b, static_cast<char>(ch & ~0x20), {v, Dim::Modal}, col);
+          continue;
+        }
+      }
       if (ncmodel::is_letter(ch) && c.i + 1 < c.text.size() && !assigns(c) &&
           ((c.text[c.i + 1] >= '0' && c.text[c.i + 1] <= '9') || c.text[c.i + 1] == '-' ||
            c.text[c.i + 1] == '.' || c.text[c.i + 1] == '+')) {
@@ -447,7 +466,7 @@ struct SinumerikReader::Impl {
       case 'S': b.s = k.value; return;
       case 'D': b.d = k.value; return;
       case 'T': b.tool_number = static_cast<double>(whole(k.value, col, "tool number")); return;
-      case 'G': b.g.push_back(static_cast<double>(whole(std::round(k.value * 10), col, "G code")) / 10); return;
+      case 'G': b.g.push_back(static_cast<double>(whole(ncmodel::round_half_away(k.value * 10), col, "G code")) / 10); return;
       case 'M': b.m.push_back(static_cast<double>(whole(k.value, col, "M code"))); return;
       case 'H': return;  // auxiliary functions: not motion
       case 'N': return;  // a block number after the first word
@@ -577,7 +596,7 @@ struct SinumerikReader::Impl {
     if (b.msg && !b.msg->empty()) out.message(*b.msg);
     bool dwell_block = false;
     for (double g : b.g) {
-      const int code = static_cast<int>(std::lround(g * 10));
+      const int code = static_cast<int>(ncmodel::round_half_away(g * 10));  // |g| <= 1e8 (address())
       switch (code) {
         case 0: motion = 0; break;
         case 10: motion = 1; break;
@@ -820,24 +839,34 @@ struct SinumerikReader::Impl {
     return i == line.size();
   }
 
+  // Blanks, then the block number a line may start with: where what follows starts.
+  static std::size_t after_block_number(std::string_view line) {
+    std::size_t i = 0;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i + 1 < line.size() && (line[i] == 'N' || line[i] == 'n') && ncmodel::is_digit(line[i + 1])) {
+      ++i;
+      while (i < line.size() && ncmodel::is_digit(line[i])) ++i;
+    }
+    return i;
+  }
+
+  // The label at `i` (blanks before it skipped), as written, and `i` after its `:`; empty when
+  // there is none (then `i` is left as it is).
+  static std::string_view label_at(std::string_view line, std::size_t& i) {
+    std::size_t k = i;
+    while (k < line.size() && (line[k] == ' ' || line[k] == '\t')) ++k;
+    const std::size_t b = k;
+    if (k >= line.size() || !ident_start(line[k])) return {};
+    while (k < line.size() && ident_char(line[k])) ++k;
+    if (k >= line.size() || line[k] != ':') return {};
+    i = k + 1;
+    return line.substr(b, k - b);
+  }
+
   // The label a line starts with (after its block number), upper case; empty when none.
   static std::string label_of(std::string_view line) {
-    std::size_t i = 0;
-    auto skip = [&] {
-      while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    };
-    skip();
-    if (i < line.size() && (line[i] == 'N' || line[i] == 'n') && i + 1 < line.size() &&
-        std::isdigit(static_cast<unsigned char>(line[i + 1]))) {
-      ++i;
-      while (i < line.size() && std::isdigit(static_cast<unsigned char>(line[i]))) ++i;
-      skip();
-    }
-    const std::size_t b = i;
-    if (i >= line.size() || !ident_start(line[i])) return {};
-    while (i < line.size() && ident_char(line[i])) ++i;
-    if (i < line.size() && line[i] == ':') return upper(line.substr(b, i - b));
-    return {};
+    std::size_t i = after_block_number(line);
+    return upper(label_at(line, i));
   }
 
   // Executes lines until commands are queued or the program ends.
@@ -856,19 +885,9 @@ struct SinumerikReader::Impl {
       if (current_line == 1 && is_tape_header(raw)) continue;
       std::string_view text = strip_comment(raw);
       // The block number, then a label (registered where it stands, for GOTOB).
-      Cursor c{text};
-      c.skip();
-      if (c.i < text.size() && (text[c.i] == 'N' || text[c.i] == 'n') && c.i + 1 < text.size() &&
-          std::isdigit(static_cast<unsigned char>(text[c.i + 1]))) {
-        ++c.i;
-        while (c.i < text.size() && std::isdigit(static_cast<unsigned char>(text[c.i]))) ++c.i;
-      }
-      if (const std::string label = label_of(text); !label.empty()) {
-        s.labels[label] = s.before;  // GOTOB executes the label's block again
-        c.skip();
-        while (c.i < text.size() && text[c.i] != ':') ++c.i;
-        ++c.i;
-      }
+      Cursor c{text, after_block_number(text)};
+      if (const std::string_view label = label_at(text, c.i); !label.empty())
+        s.labels[upper(label)] = s.before;  // GOTOB executes the label's block again
       Block& b = block_;
       b.clear();
       try {

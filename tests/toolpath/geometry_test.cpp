@@ -1,5 +1,11 @@
-// R-form arc centres (the PikoCNC manual's section 5.3 vectors) and the sweeps they give.
+// R-form arc centres (the PikoCNC manual's section 5.3 vectors) and the sweeps they give; angles brought
+// into [0, 360).
 #include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <random>
 
 #include "toolpath/geometry.hpp"
 
@@ -46,6 +52,35 @@ TEST(Geometry, CentreFromRadiusInOtherPlanes) {
 TEST(Geometry, FullCircleSweep) {
   const auto arc = toolpath::geometry::make_arc({0, 0, 0}, {0, 0, 0}, {5, 0, 0}, Plane::XY, Direction::CW, std::nullopt);
   EXPECT_EQ(arc.sweep, 360.0);
+}
+
+}  // namespace
+
+namespace {
+
+// normalize_degrees leaves fmod out below 360 in magnitude (fmod is exact there): the same degrees,
+// bit for bit, as the remainder by fmod for angles of every size and sign.
+TEST(Geometry, NormalizeDegreesAsFmod) {
+  auto reference = [](double degrees) {
+    double r = std::fmod(degrees, 360.0);
+    if (r < 0) r += 360.0;
+    return r >= 360.0 ? 0.0 : r;
+  };
+  auto same = [&](double v) {
+    SCOPED_TRACE(v);
+    const double got = toolpath::geometry::normalize_degrees(v), expected = reference(v);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(expected));
+  };
+  for (double v : {0.0, -0.0, 359.99999999999994, -359.99999999999994, 360.0, -360.0, 720.0, -1e-300, 1e-300, 180.0,
+                   -180.0, 1e20, -1e20})
+    same(v);
+  std::mt19937_64 rng(25);
+  std::uniform_real_distribution<double> angle(-1000.0, 1000.0);
+  for (int n = 0; n < 100000; ++n) {
+    const double v = angle(rng);
+    same(v);
+    same(std::atan2(angle(rng), angle(rng)) * 180.0 / 3.14159265358979323846);  // as make_arc's angles come
+  }
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
+#include <memory>
 #include <random>
 #include <string>
 
@@ -83,6 +85,99 @@ TEST(BlockText, RandomNumbersAsStrtod) {
     EXPECT_EQ(c.i, end);
     EXPECT_EQ(got, expected);
     EXPECT_EQ(std::signbit(got), std::signbit(expected));
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// The word loops' shortcut (Cursor::plain_number) against number() on the same random texts: where
+// it takes a number it gives number()'s value and end; where it declines, the cursor has not moved.
+TEST(BlockText, PlainNumberAsNumber) {
+  std::mt19937_64 rng(2525);
+  const std::string alphabet = "00123456789.-+ e";
+  for (int n = 0; n < 200000; ++n) {
+    std::string text;
+    const std::size_t length = 1 + rng() % (rng() % 8 == 0 ? 22 : 9);
+    for (std::size_t k = 0; k < length; ++k) text += alphabet[rng() % alphabet.size()];
+    if (rng() % 2) text += "X1";
+    SCOPED_TRACE(text);
+    ncmodel::Cursor fast{text, 0};
+    double got = 0;
+    if (!fast.plain_number(got)) {
+      EXPECT_EQ(fast.i, 0u);
+      continue;
+    }
+    ncmodel::Cursor general{text, 0};
+    const double expected = general.number();  // never throws where the shortcut took a number
+    EXPECT_EQ(fast.i, general.i);
+    EXPECT_EQ(got, expected);
+    EXPECT_EQ(std::signbit(got), std::signbit(expected));
+  }
+}
+
+// round_half_away is std::round but for the sign of a zero: halves, values near them, large values
+// (where doubles are integers), infinities and NaN.
+TEST(BlockText, RoundHalfAwayAsStdRound) {
+  auto same = [](double v) {
+    SCOPED_TRACE(v);
+    const double got = ncmodel::round_half_away(v), expected = std::round(v);
+    if (std::isnan(expected)) EXPECT_TRUE(std::isnan(got));
+    else EXPECT_EQ(got, expected);
+  };
+  for (double v : {0.0, -0.0, 0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 0.49999999999999994, -0.49999999999999994, 10.0,
+                   4503599627370495.5, 0x1p51, -0x1p51, 0x1p51 - 0.5, 0x1p52 + 1, 1e300, -1e300,
+                   std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                   std::numeric_limits<double>::quiet_NaN(), 5e-324})
+    same(v);
+  std::mt19937_64 rng(25);
+  for (int n = 0; n < 200000; ++n) {
+    const int scale = static_cast<int>(rng() % 60) - 8;
+    const double v = std::ldexp(static_cast<double>(rng() % (1u << 20)) / (1u << 20), scale) * (rng() % 2 ? 1 : -1);
+    same(v);
+    same(std::round(v * 2) / 2);  // a half (or whole) number
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// find_either against a byte loop: runs of every length up to 80 at every alignment, with neither
+// byte, one, or both at random places (in the 16-byte blocks, in the overlapping last one, at the
+// ends). Each run is copied to a buffer of its own size, so that a read past it is an ASan error.
+TEST(BlockText, FindEitherAsALoop) {
+  std::mt19937_64 rng(25);
+  for (int n = 0; n < 200000; ++n) {
+    const std::size_t size = rng() % 81;
+    std::string text(size, ' ');
+    for (char& c : text) c = "ab\n\r(;\"xyz 0123"[rng() % 15];
+    const char a = "\n(\"x"[rng() % 4], b = "\r;;y"[rng() % 4];
+    if (rng() % 2)  // mostly neither
+      for (char& c : text)
+        if (c == a || c == b) c = '.';
+    if (size > 0 && rng() % 4 == 0) text[rng() % size] = rng() % 2 ? a : b;
+    const auto copy = std::make_unique<char[]>(size);
+    std::copy(text.begin(), text.end(), copy.get());
+    std::size_t expected = 0;
+    while (expected < size && text[expected] != a && text[expected] != b) ++expected;
+    ASSERT_EQ(ncmodel::find_either(copy.get(), size, a, b), expected) << text;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// The name character tests (a table) as their definitions, for every byte.
+TEST(BlockText, NameCharactersAsDefined) {
+  for (int c = 0; c < 256; ++c) {
+    const char ch = static_cast<char>(c);
+    const bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+    EXPECT_EQ(ncmodel::is_letter(ch), letter) << c;
+    EXPECT_EQ(ncmodel::ident_start(ch), letter || c == '_') << c;
+    EXPECT_EQ(ncmodel::ident_char(ch), letter || c == '_' || (c >= '0' && c <= '9')) << c;
   }
 }
 
