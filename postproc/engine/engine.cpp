@@ -33,20 +33,6 @@ namespace {
 
 using toolpath::iequals;
 
-// Only depth 0 and 1 commands are the stream; deeper ones record calls the original post made itself.
-class StreamCommands final : public toolpath::CommandSource {
-public:
-  explicit StreamCommands(toolpath::CommandSource& inner) : inner_(inner) {}
-  bool next(toolpath::Command& out) override {
-    while (inner_.next(out))
-      if (out.is_stream_command()) return true;
-    return false;
-  }
-
-private:
-  toolpath::CommandSource& inner_;
-};
-
 // The unit system a job states in its @start_of_file (`inch_system`); metric when it does not.
 prp::Units job_units(const toolpath::Command* first) {
   if (!first || !iequals(first->name, "@start_of_file")) return prp::Units::Metric;
@@ -179,7 +165,7 @@ public:
     // Three stages overlap: reading the job, the PRP's filters, the post. Reading gets a thread of
     // its own because a filter may have to take in the whole job before it hands anything on
     // (gen_procs: @start_of_file names the last subroutine label).
-    StreamCommands stream(input);
+    toolpath::StreamCommands stream(input);
     StreamWarnings warnings(options_.warnings, options_.input_name, two_passes);
     try {
       run_stream(stream, summary, warnings, two_passes);
@@ -260,7 +246,7 @@ private:
     auto* reader = dynamic_cast<toolpath::TraceReader*>(source.get());
     if (!reader) return nullptr;  // only a trace file can be skimmed
     reader->skim_job_motions();
-    StreamCommands stream(*reader);
+    toolpath::StreamCommands stream(*reader);
     return prp::forecast_jobs(*machine_, stream);
   }
 

@@ -11,22 +11,16 @@
 #include <fmt/format.h>
 
 #include "machines/iso/reader.hpp"
-#include "toolpath/trace_writer.hpp"
+#include "tests/support/read_back.hpp"
 
 namespace {
 
-// The trace and the diagnostics (`line: severity: text`, columns left out: a number written
-// otherwise moves the words after it) of `program` read with `dialect`.
+// The trace and the diagnostics of `program` read with `dialect`.
 std::pair<std::string, std::string> read(const std::string& program, const std::string& dialect) {
   const iso::Rules* rules = iso::rules_of(dialect);
   EXPECT_NE(rules, nullptr) << dialect;
   auto reader = iso::IsoReader::from_string(program, "test.nc", *rules);
-  std::ostringstream trace;
-  toolpath::write_trace(*reader, trace);
-  std::string diagnostics;
-  for (const auto& d : reader->diagnostics().kept())
-    diagnostics += fmt::format("{}: {}: {}\n", d.where.line, d.error() ? "error" : "warning", d.message);
-  return {trace.str(), diagnostics};
+  return test_support::trace_and_diagnostics(*reader);
 }
 
 // A number as a program writes it (`12.5`, `-0.25`, `3`, `.5`, `7.`), and the same value in a form

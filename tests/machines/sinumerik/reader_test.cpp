@@ -12,20 +12,14 @@
 #include <fmt/format.h>
 
 #include "machines/sinumerik/reader.hpp"
-#include "toolpath/trace_writer.hpp"
+#include "tests/support/read_back.hpp"
 
 namespace {
 
-// The trace and the diagnostics (`line: severity: text`, columns left out: a number written
-// otherwise moves the words after it) of `program`.
+// The trace and the diagnostics of `program`.
 std::pair<std::string, std::string> read(const std::string& program) {
   auto reader = sinumerik::SinumerikReader::from_string(program, "MAIN.MPF");
-  std::ostringstream trace;
-  toolpath::write_trace(*reader, trace);
-  std::string diagnostics;
-  for (const auto& d : reader->diagnostics().kept())
-    diagnostics += fmt::format("{}: {}: {}\n", d.where.line, d.error() ? "error" : "warning", d.message);
-  return {trace.str(), diagnostics};
+  return test_support::trace_and_diagnostics(*reader);
 }
 
 // A word (`X12.5`, `Y-0.25`, `F300`, `Z.5`, `I7.`) as a program writes it, and the same value in a

@@ -151,20 +151,6 @@ std::string slurp(const std::string& path) {
   return s.str();
 }
 
-// Depth 0 and 1 only, as the engine hands the skim to the forecast.
-class StreamOnly final : public toolpath::CommandSource {
-public:
-  explicit StreamOnly(toolpath::CommandSource& inner) : inner_(inner) {}
-  bool next(toolpath::Command& out) override {
-    while (inner_.next(out))
-      if (out.is_stream_command()) return true;
-    return false;
-  }
-
-private:
-  toolpath::CommandSource& inner_;
-};
-
 // Every example job through every shipped post whose PRP generates procedures: two passes (where
 // the skim allows them) post what one pass posts, and fail where it fails.
 TEST_F(TwoPasses, ShippedPostsOnTheExampleJobs) {
@@ -196,7 +182,7 @@ TEST_F(TwoPasses, ShippedPostsOnTheExampleJobs) {
       std::istringstream in(job);
       toolpath::TraceReader skim(in, path);
       skim.skim_job_motions();
-      StreamOnly stream(skim);
+      toolpath::StreamCommands stream(skim);  // as the engine hands the skim to the forecast
       if (prp::forecast_jobs(params, stream)) ++forecast;
     }
   }
