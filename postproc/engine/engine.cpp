@@ -247,7 +247,11 @@ private:
     if (!reader) return nullptr;  // only a trace file can be skimmed
     reader->skim_job_motions();
     toolpath::StreamCommands stream(*reader);
-    return prp::forecast_jobs(*machine_, stream);
+    // Checked as the full pass checks, so that the post never runs a value the check would refuse
+    // (the main program goes to it before the full pass reads that far). A check that fails here,
+    // as the skim left out what an earlier command gave, means one pass.
+    ParameterCheck checked(stream, options_.input_name);
+    return prp::forecast_jobs(*machine_, checked);
   }
 
   // What the engine needs to know about a command name, looked up once per name.

@@ -144,6 +144,26 @@ TEST_F(TwoPasses, RunStartsAgainWhenTheJobIsNotItsForecast) {
   EXPECT_EQ(again.warnings, one.warnings);
 }
 
+// A wrong value stops the run where one pass stops it: in the main program before the post has run
+// any of it (the skim is checked too), in a body at the value's own position.
+TEST_F(TwoPasses, WrongValuesStopTheRunAsInOnePass) {
+  auto error_of = [&](const std::string& job, const std::vector<std::string>& reopens) {
+    try {
+      post(job, reopens);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string in_main = replaced(kJob, "tool_number:7 tool_offset:7.0", "tool_number:'seven' tool_offset:7.0");
+  const std::string in_body = replaced(kJob, "xpos:30.0 ypos:10.0 zpos:-1.0", "xpos:30..0 ypos:10.0 zpos:-1.0");
+  for (const std::string& job : {in_main, in_body}) {
+    const std::string one = error_of(job, {});
+    EXPECT_NE(one.find("job.trace:"), std::string::npos) << one;
+    EXPECT_EQ(error_of(job, {job}), one);
+  }
+}
+
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
