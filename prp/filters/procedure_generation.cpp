@@ -276,35 +276,43 @@ void ProcedureGeneration::bracket(toolpath::Command& out, const char* name, std:
   if (end_of_job) out.set("end_of_job", toolpath::Value::make_logical(*end_of_job));
 }
 
+// Queues the job's tool changes and its call, from its head (@start_of_job and the tool changes
+// that open the job) where `head` reads next.
+void ProcedureGeneration::queue_call(CommandSpool& head, const Job& job) {
+  toolpath::Command start;
+  head.read(start);
+  add_tool_number(start, job);
+  for (int i = 0; i < job.tools; ++i) {
+    queue_.emplace_back();
+    head.read(queue_.back());
+  }
+  queue_.emplace_back();
+  call(queue_.back(), *job.label, &start);
+}
+
+// The forecast's main program is sent: the bodies come in now (main_ checks them from its start).
+bool ProcedureGeneration::go_live(toolpath::Command& out, CommandKind& kind) {
+  main_->seek(0);
+  phase_ = Phase::Live;
+  return next_live(out, kind);
+}
+
 bool ProcedureGeneration::next_main(toolpath::Command& out, CommandKind& kind) {
   if (pop_queue(out, kind)) return true;
   if (!main_->read(out, kind)) {
-    if (forecast_) {  // a main program without @end_of_file: the bodies come in now
-      main_->seek(0);
-      phase_ = Phase::Live;
-      return next_live(out, kind);
-    }
+    if (forecast_) return go_live(out, kind);  // a main program without @end_of_file
     if (bodies_sent_ || !start_next_procedure()) {
       phase_ = Phase::Done;
       return false;
     }
     return produce(out, kind);
   }
-  if (out.name == kJobMarker && forecast_) {
-    const Job& job = jobs_[out.index];
-    toolpath::Command start;
-    main_->read(start);
-    add_tool_number(start, job);
-    for (int i = 0; i < job.tools; ++i) {
-      queue_.emplace_back();
-      main_->read(queue_.back());
-    }
-    queue_.emplace_back();
-    call(queue_.back(), *job.label, &start);
-    return next_main(out, kind);
-  }
   if (out.name == kJobMarker) {
     const Job& job = jobs_[out.index];
+    if (forecast_) {  // the job's head follows its marker
+      queue_call(*main_, job);
+      return next_main(out, kind);
+    }
     bodies_->seek(job.offset);
     if (!job.label) {  // stays inline (gen_procs = C and it calls a shared point list)
       body_inline_ = true;
@@ -314,15 +322,7 @@ bool ProcedureGeneration::next_main(toolpath::Command& out, CommandKind& kind) {
       phase_ = Phase::Body;
       return next_body(out, kind);
     }
-    toolpath::Command start;
-    bodies_->read(start);
-    add_tool_number(start, job);
-    for (int i = 0; i < job.tools; ++i) {
-      queue_.emplace_back();
-      bodies_->read(queue_.back());
-    }
-    queue_.emplace_back();
-    call(queue_.back(), *job.label, &start);
+    queue_call(*bodies_, job);
     return next_main(out, kind);
   }
   const bool stream = out.is_stream_command();
@@ -331,12 +331,10 @@ bool ProcedureGeneration::next_main(toolpath::Command& out, CommandKind& kind) {
     out.set("last_proc_number", toolpath::Value::make_integer(last_label_));
     out.set("first_user_proc", toolpath::Value::make_integer(last_label_ + 1));
   }
-  if (stream && kind == K::end_of_file && forecast_) {  // the bodies come in now, then this
+  if (stream && kind == K::end_of_file && forecast_) {  // after the bodies
     swap(end_of_file_, out);
     has_end_of_file_ = true;
-    main_->seek(0);
-    phase_ = Phase::Live;
-    return next_live(out, kind);
+    return go_live(out, kind);
   }
   if (stream && kind == K::end_of_file && !bodies_sent_) {
     swap(end_of_file_, out);

@@ -78,6 +78,8 @@ private:
   bool next_main(toolpath::Command& out, CommandKind& kind);
   bool next_body(toolpath::Command& out, CommandKind& kind);
   bool next_points(toolpath::Command& out, CommandKind& kind);
+  void queue_call(CommandSpool& head, const Job& job);
+  bool go_live(toolpath::Command& out, CommandKind& kind);
   bool next_live(toolpath::Command& out, CommandKind& kind);
   void expect_forecast(const toolpath::Command& c);  // the next command of main_, or ForecastMismatch
   void end_live();
