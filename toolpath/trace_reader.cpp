@@ -33,6 +33,9 @@ bool opens_header(std::string_view rest) {
   return rest.substr(j, 2) == ")@" || rest.find(")@") != std::string_view::npos;
 }
 
+// A line (from its first byte that is not a blank) that starts a command: `@name`, `(N)@name`.
+bool starts_command(std::string_view rest) { return rest.front() == '@' || (rest.front() == '(' && opens_header(rest)); }
+
 }  // namespace
 
 TraceReader::TraceReader(std::istream& in, std::string file_name) : in_(in), file_(std::move(file_name)) {}
@@ -92,8 +95,7 @@ bool TraceReader::read_line() {
     if (in_.bad()) fail(1, "read error");
   }
   if (!line_.empty() && line_.back() == '\r') line_.remove_suffix(1);
-  ++line_number_;
-  line32_ = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
+  count_lines(1);
   return true;
 }
 
@@ -208,10 +210,7 @@ void TraceReader::skip_in_chunk() {
     p = nl + 1;
   }
   if (lines == 0) return;
-  buffer_pos_ = static_cast<std::size_t>(p - buffer_.data());
-  header_ahead_ = false;
-  line_number_ += lines;
-  line32_ = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
+  take_lines(p, lines);
   next_index_ += skipped;
 }
 
@@ -224,7 +223,7 @@ bool TraceReader::skim_to_kept_header() {
     const std::size_t i = skip_blanks(line_, 0);
     if (i == line_.size() || line_[i] == ';') continue;
     const std::string_view rest = line_.substr(i);
-    if (rest.front() != '@' && !(rest.front() == '(' && opens_header(rest))) {
+    if (!starts_command(rest)) {
       if (seen_header_) continue;  // a line of a skipped command (a kept one reads its own)
       have_line_ = true;           // before the first header: the general rule says what is wrong
       return true;
@@ -290,7 +289,7 @@ bool TraceReader::next(Command& out) {
     std::size_t i = skip_blanks(line_, 0);
     if (i == line_.size() || line_[i] == ';') continue;  // blank lines and `;` comments
     std::string_view rest = line_.substr(i);
-    if (rest.front() == '@' || (rest.front() == '(' && opens_header(rest))) {
+    if (starts_command(rest)) {
       have_line_ = true;  // the next command's header
       break;
     }

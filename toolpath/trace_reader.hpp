@@ -60,13 +60,17 @@ private:
   std::size_t fast_lines(Command& out, const char* p, const char* line);
   // The number of the line after the current one, as positions keep it (saturating).
   std::uint32_t next_line32() const { return static_cast<std::uint32_t>(std::min<std::size_t>(line_number_ + 1, 0xffffffff)); }
-  // The fast path read the line up to `next`, where the next line starts.
-  void take_line(const char* next) {
-    buffer_pos_ = static_cast<std::size_t>(next - buffer_.data());
-    header_ahead_ = false;
-    ++line_number_;
+  void count_lines(std::size_t n) {
+    line_number_ += n;
     line32_ = static_cast<std::uint32_t>(std::min<std::size_t>(line_number_, 0xffffffff));
   }
+  // A fast path read `n` lines of the chunk, up to `next`, where the next line starts.
+  void take_lines(const char* next, std::size_t n) {
+    buffer_pos_ = static_cast<std::size_t>(next - buffer_.data());
+    header_ahead_ = false;
+    count_lines(n);
+  }
+  void take_line(const char* next) { take_lines(next, 1); }
   [[noreturn]] void fail(std::size_t column, const std::string& message) const;
   bool parse_header(Command& out);
   void parse_body_line(Command& out, bool first_after_header, std::size_t first_non_blank);
