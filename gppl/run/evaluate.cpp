@@ -47,23 +47,6 @@ const char* type_name(Type t) {
 
 bool is_relation(BinaryOp op) { return op >= BinaryOp::Eq; }
 
-template <typename T>
-bool compare(BinaryOp op, const T& a, const T& b) {
-  switch (op) {
-    case BinaryOp::Eq: return a == b;
-    case BinaryOp::Ne: return a != b;
-    case BinaryOp::Lt: return a < b;
-    case BinaryOp::Le: return a <= b;
-    case BinaryOp::Gt: return a > b;
-    default: return a >= b;
-  }
-}
-
-// to_numeric / to_integer of a value known not to be a string (they cannot fail then).
-double number_of(const Value& v) {
-  return v.type == Type::Numeric ? v.numeric : v.type == Type::Integer ? double(v.integer) : v.logical ? 1.0 : 0.0;
-}
-std::int64_t integer_of(const Value& v) { return v.type == Type::Integer ? v.integer : v.logical ? 1 : 0; }
 
 }  // namespace
 
@@ -112,25 +95,12 @@ void Interpreter::State::eval(std::uint32_t index, Value& out) {
   }
 }
 
-bool Interpreter::State::condition(std::uint32_t node) {
-  // The usual tests read their operands in place: `if x gt 5`, `if a eq b`, `if flag`, `if change(x)`.
+bool Interpreter::State::condition_slowly(std::uint32_t node) {
+  // Operands still read in place where they can be: `if a + 1 gt b` is not, `if flag ne 1` is.
   const Node& n = program.nodes[node];
   switch (n.kind) {
     case NodeKind::Binary: {
-      if (n.simple) {  // compiled: `variable op constant` or `variable op variable`
-        const Relation& r = program.relations[n.list];
-        const Value& a = relation_cell(r.left).value;
-        if (a.type == Type::String) break;
-        if (!r.right_is_variable) {
-          if (r.numeric || a.type == Type::Numeric) return compare(r.op, number_of(a), r.number);
-          return compare(r.op, integer_of(a), r.integer);
-        }
-        const Value& b = relation_cell(r.right).value;
-        if (b.type == Type::String) break;
-        if (a.type == Type::Numeric || b.type == Type::Numeric) return compare(r.op, number_of(a), number_of(b));
-        return compare(r.op, integer_of(a), integer_of(b));
-      }
-      if (!is_relation(n.op)) break;
+      if (!is_relation(n.op) || n.simple) break;  // simple: a string side, which eval() compares
       const Value* left = operand(program.nodes[n.a]);
       const Value* right = left ? operand(program.nodes[n.b]) : nullptr;
       if (!right || left->type == Type::String || right->type == Type::String) break;
@@ -140,16 +110,7 @@ bool Interpreter::State::condition(std::uint32_t node) {
       return compare(n.op, integer_of(*left), integer_of(*right));
     }
     case NodeKind::Variable:
-      if (n.simple) {
-        const Value& v = cell(program.refs[n.a]).value;
-        return v.type == Type::Logical ? v.logical : truth(v);
-      }
-      break;
-    case NodeKind::Attribute:
-      if (n.simple) {
-        const Cell& c = cell(program.refs[n.a]);
-        return n.active_attribute ? c.active : c.changed;
-      }
+      if (n.simple) return truth(cell(program.refs[n.a]).value);
       break;
     // What eval gives them, without a scratch value: `if change(xpos) or change(ypos)`.
     case NodeKind::And: return condition(n.a) && condition(n.b);

@@ -11,6 +11,21 @@ Flow Interpreter::State::run(std::uint32_t procedure, std::uint32_t args_list, s
   if (int(frames.size()) >= max_call_depth)
     fail(ErrorCode::StackOverflow, {},
          fmt::format("procedure calls nest deeper than {} levels (runaway recursion?)", max_call_depth));
+  const std::uint32_t base = stack_top;
+  if (arg_count == 0 && proc.frame_size == 0) frames.push_back(Frame{procedure, base});  // most: nothing to set up
+  else enter(proc, procedure, args_list, arg_count);
+  if (trace != nullptr && !in_init && trace_level(procedure) >= 1)
+    trace_enter(proc.name, int(frames.size()), trace_level(procedure));
+  if (program.uses_line_functions) sink.procedure_boundary(procedure, true);  // body structure (start_line)
+  const Flow flow = execute(procedure);
+  if (program.uses_line_functions) sink.procedure_boundary(procedure, false);
+  frames.pop_back();
+  stack_top = base;
+  return flow;
+}
+
+void Interpreter::State::enter(const Procedure& proc, std::uint32_t procedure, std::uint32_t args_list,
+                               std::uint32_t arg_count) {
   // Arguments are evaluated in the caller's frame.
   const std::uint32_t first_arg = scratch_top;
   for (std::uint32_t i = 0; i < arg_count; ++i) eval(program.lists[args_list + i], push_scratch());
@@ -26,14 +41,6 @@ Flow Interpreter::State::run(std::uint32_t procedure, std::uint32_t args_list, s
     assign(stack[base + l.offset], *scratch[first_arg + i], ChangeOverride::Compute, &ref);
   }
   scratch_top = first_arg;
-  if (trace != nullptr && !in_init && trace_level(procedure) >= 1)
-    trace_enter(proc.name, int(frames.size()), trace_level(procedure));
-  if (program.uses_line_functions) sink.procedure_boundary(procedure, true);  // body structure (start_line)
-  const Flow flow = execute(procedure);
-  if (program.uses_line_functions) sink.procedure_boundary(procedure, false);
-  frames.pop_back();
-  stack_top = base;
-  return flow;
 }
 
 Flow Interpreter::State::execute(std::uint32_t procedure) {

@@ -49,6 +49,25 @@ inline bool same_text(std::string_view a, std::string_view b) {
   return p[0] == q[0] && p[n / 2] == q[n / 2] && p[n - 1] == q[n - 1];  // 1 to 3 bytes: all of them
 }
 
+// The comparison rules of 4.5 for values known not to be strings: numeric when either side is,
+// else integers (a logical is 0 or 1). Shared by condition() and eval().
+template <typename T>
+bool compare(BinaryOp op, const T& a, const T& b) {
+  switch (op) {
+    case BinaryOp::Eq: return a == b;
+    case BinaryOp::Ne: return a != b;
+    case BinaryOp::Lt: return a < b;
+    case BinaryOp::Le: return a <= b;
+    case BinaryOp::Gt: return a > b;
+    default: return a >= b;
+  }
+}
+// to_numeric / to_integer of a value known not to be a string (they cannot fail then).
+inline double number_of(const Value& v) {
+  return v.type == Type::Numeric ? v.numeric : v.type == Type::Integer ? double(v.integer) : v.logical ? 1.0 : 0.0;
+}
+inline std::int64_t integer_of(const Value& v) { return v.type == Type::Integer ? v.integer : v.logical ? 1 : 0; }
+
 struct FormatCache {
   std::string spec;
   std::optional<DisplayFormat> format;
@@ -201,12 +220,46 @@ struct Interpreter::State {
 
   // evaluate.cpp
   void eval(std::uint32_t node, Value& out);
-  bool condition(std::uint32_t node);
+  // The usual tests inline, read in place: `if x gt 5`, `if a eq b`, `if flag`, `if change(x)`.
+  bool condition(std::uint32_t node) {
+    const Node& n = program.nodes[node];
+    if (n.simple) {
+      switch (n.kind) {
+        case NodeKind::Binary: {  // compiled: `variable op constant` or `variable op variable`
+          const Relation& r = program.relations[n.list];
+          const Value& a = relation_cell(r.left).value;
+          if (a.type == Type::String) break;
+          if (!r.right_is_variable) {
+            if (r.numeric || a.type == Type::Numeric) return compare(r.op, number_of(a), r.number);
+            return compare(r.op, integer_of(a), r.integer);
+          }
+          const Value& b = relation_cell(r.right).value;
+          if (b.type == Type::String) break;
+          if (a.type == Type::Numeric || b.type == Type::Numeric) return compare(r.op, number_of(a), number_of(b));
+          return compare(r.op, integer_of(a), integer_of(b));
+        }
+        case NodeKind::Variable: {
+          const Value& v = cell(program.refs[n.a]).value;
+          if (v.type == Type::Logical) return v.logical;
+          break;
+        }
+        case NodeKind::Attribute: {
+          const Cell& c = cell(program.refs[n.a]);
+          return n.active_attribute ? c.active : c.changed;
+        }
+        default: break;
+      }
+    }
+    return condition_slowly(node);
+  }
+  bool condition_slowly(std::uint32_t node);  // the rest: and/or/not, expressions, strings
   void binary(const Node& n, Value& left, const Value& right);
   void call_builtin(const Node& n, Value& out);
 
   // execute.cpp
   Flow run(std::uint32_t procedure, std::uint32_t args_list, std::uint32_t arg_count);
+  // The new frame of a procedure with parameters or locals: arguments, fresh locals (3.4, 5.7).
+  void enter(const Procedure& proc, std::uint32_t procedure, std::uint32_t args_list, std::uint32_t arg_count);
   Flow execute(std::uint32_t procedure);
   RunResult top_level(std::uint32_t procedure);
 

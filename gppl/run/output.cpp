@@ -19,6 +19,16 @@ bool is_directive(std::string_view line) {
   return end - first >= 4 && line[first + 1] == '!' && line[end - 1] == '!' && line[end - 2] == '!';
 }
 
+// A number (integer, numeric or logical) into `out`; the printer's error 410 gets the item's position.
+[[gnu::always_inline]] inline void write_number(const Program& program, const GenItem& item, const DisplayFormat& f, const Value& v,
+                                                OutputLine& out) {
+  try {
+    out.commit(write_formatted(out.room(formatted_room), f, v));
+  } catch (const Error& e) {
+    throw Error(e.number(), program.position(item.pos), e.text());
+  }
+}
+
 constexpr std::string_view kIntegerDefault = "5.0(p)";
 constexpr std::string_view kNumericDefault = "5.3";
 
@@ -161,12 +171,7 @@ void Interpreter::State::render(const GenItem& item, OutputLine& out) {
       return;
     }
     const DisplayFormat* f = known_format(item);
-    if (!f) f = &format_for(item, value);
-    try {
-      out.commit(write_formatted(out.room(formatted_room), *f, value));
-    } catch (const Error& e) {
-      throw Error(e.number(), program.position(item.pos), e.text());
-    }
+    write_number(program, item, f ? *f : format_for(item, value), value, out);
     return;
   }
   Value& v = push_scratch();
@@ -174,12 +179,11 @@ void Interpreter::State::render(const GenItem& item, OutputLine& out) {
   if (v.type == Type::String) {
     out.append(v.text);
   } else {
-    const DisplayFormat& f = format_for(item, v);
     try {
-      out.commit(write_formatted(out.room(formatted_room), f, v));
-    } catch (const Error& e) {
+      write_number(program, item, format_for(item, v), v, out);
+    } catch (...) {
       pop_scratch();
-      throw Error(e.number(), program.position(item.pos), e.text());
+      throw;
     }
   }
   pop_scratch();
@@ -210,6 +214,21 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
       }
       case ItemKind::Text: append(program.constants[item.a].text); break;
       case ItemKind::Value: {
+        if (line_open && item.global_cell != kNone) {
+          // The usual item, a global number in a format already parsed: no render() call.
+          Cell& c = globals[item.global_cell];
+          const DisplayFormat* f = c.value.type != Type::String ? known_format(item) : nullptr;
+          if (f) {
+            const std::size_t at = line.size();
+            write_number(program, item, *f, c.value, line);
+            if (separator_pending && line.size() > at) {
+              if (line[at] != ' ') line.insert(at, ' ');
+              separator_pending = false;
+            }
+            if (clear_change) c.changed = false;
+            break;
+          }
+        }
         if (line_open) {
           // Straight into the line; the separator blank goes in front afterwards if the text needs one.
           const std::size_t at = line.size();
