@@ -221,7 +221,7 @@ struct Interpreter::State {
   // evaluate.cpp
   void eval(std::uint32_t node, Value& out);
   // The usual tests inline, read in place: `if x gt 5`, `if a eq b`, `if flag`, `if change(x)`.
-  bool condition(std::uint32_t node) {
+  [[gnu::always_inline]] bool condition(std::uint32_t node) {
     const Node& n = program.nodes[node];
     if (n.simple) {
       switch (n.kind) {
@@ -267,17 +267,26 @@ struct Interpreter::State {
   void generate(std::uint32_t first, std::uint32_t count);
   void render(const GenItem& item, OutputLine& out);
   const DisplayFormat& format_for(const GenItem& item, const Value& v);
-  // The display format of a variable item when it is parsed already and still applies (a constant
-  // format, or the `name_f` text the item's cache holds); nullptr: format_for() works it out.
-  const DisplayFormat* known_format(const GenItem& item) {
+  // The display format of a variable item holding `v` when it is parsed already and still applies
+  // (a constant format, the `name_f` text the item's cache holds, or the default format of v's
+  // type when the item has no `name_f`); nullptr: format_for() works it out.
+  const DisplayFormat* known_format(const GenItem& item, const Value& v) {
     if (item.format_kind == FormatKind::Constant) {
       const FormatCache& constant = constant_formats[item.format];
       return constant.format ? &*constant.format : nullptr;
     }
-    if (item.format_kind != FormatKind::Default || item.name_format == kNone) return nullptr;
-    const std::string& spec = cell(program.refs[item.name_format]).value.text;
-    const FormatCache& site = format_sites[item.site];
-    return !spec.empty() && site.format && same_text(site.spec, spec) ? &*site.format : nullptr;
+    if (item.format_kind != FormatKind::Default) return nullptr;
+    const FormatCache* site;
+    const std::string* spec;
+    if (item.name_format != kNone) {
+      site = &format_sites[item.site];
+      spec = &cell(program.refs[item.name_format]).value.text;
+    } else {
+      const bool numeric = v.type == Type::Numeric;
+      site = &format_sites[program.format_sites + (numeric ? 1 : 0)];
+      spec = &globals[numeric ? program.slots.numeric_def_f : program.slots.integer_def_f].value.text;
+    }
+    return !spec->empty() && site->format && same_text(site->spec, *spec) ? &*site->format : nullptr;
   }
   // The parsed display format of `spec`, parsed again only when the text changed since last time.
   const DisplayFormat& cached(FormatCache& cache, std::string_view spec, SourcePos pos) {

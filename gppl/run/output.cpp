@@ -170,7 +170,7 @@ void Interpreter::State::render(const GenItem& item, OutputLine& out) {
       out.append(value.text);  // strings print verbatim; a format is ignored (6.4)
       return;
     }
-    const DisplayFormat* f = known_format(item);
+    const DisplayFormat* f = known_format(item, value);
     write_number(program, item, f ? *f : format_for(item, value), value, out);
     return;
   }
@@ -217,7 +217,7 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
         if (line_open && item.global_cell != kNone) {
           // The usual item, a global number in a format already parsed: no render() call.
           Cell& c = globals[item.global_cell];
-          const DisplayFormat* f = c.value.type != Type::String ? known_format(item) : nullptr;
+          const DisplayFormat* f = c.value.type != Type::String ? known_format(item, c.value) : nullptr;
           if (f) {
             const std::size_t at = line.size();
             write_number(program, item, *f, c.value, line);
