@@ -116,6 +116,7 @@ struct GenItem {
   // variable. kNone otherwise. Saves the reference's indirections on every item of every line.
   std::uint32_t global_cell = kNone;
   bool has_gcode = false;         // Group: contains the variable gcode (gcode_space)
+  bool text_value_pair = false;   // Group: exactly a Text then a Value, `[' X'xpos]`
   SourcePos pos;
 };
 

@@ -60,6 +60,8 @@ void Compiler::generate_item(const SyntaxNode& n, Context& ctx, bool in_group) {
     group.required = std::uint32_t(program_->lists.size());
     group.required_count = std::uint32_t(required.size());
     group.has_gcode = has_gcode;
+    group.text_value_pair =
+        group.a == 2 && items[index + 1].kind == ItemKind::Text && items[index + 2].kind == ItemKind::Value;
     if (required.size() == 1) group.global_cell = global_cell_of(program_->refs[required[0]]);
     program_->lists.insert(program_->lists.end(), required.begin(), required.end());
     return;

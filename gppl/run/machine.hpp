@@ -266,6 +266,7 @@ struct Interpreter::State {
   // output.cpp
   void generate(std::uint32_t first, std::uint32_t count);
   void render(const GenItem& item, OutputLine& out);
+  bool write_known_value(const GenItem& item, bool clear_change);
   const DisplayFormat& format_for(const GenItem& item, const Value& v);
   // The display format of a variable item holding `v` when it is parsed already and still applies
   // (a constant format, the `name_f` text the item's cache holds, or the default format of v's

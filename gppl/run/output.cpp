@@ -189,6 +189,23 @@ void Interpreter::State::render(const GenItem& item, OutputLine& out) {
   pop_scratch();
 }
 
+// The usual value item, a global number in a format already parsed, straight into the open line
+// (no render() call); false, having done nothing, for any other.
+[[gnu::always_inline]] inline bool Interpreter::State::write_known_value(const GenItem& item, bool clear_change) {
+  if (!line_open || item.global_cell == kNone) return false;
+  Cell& c = globals[item.global_cell];
+  const DisplayFormat* f = c.value.type != Type::String ? known_format(item, c.value) : nullptr;
+  if (!f) return false;
+  const std::size_t at = line.size();
+  write_number(program, item, *f, c.value, line);
+  if (separator_pending && line.size() > at) {  // the separator blank goes in front if the text needs one
+    if (line[at] != ' ') line.insert(at, ' ');
+    separator_pending = false;
+  }
+  if (clear_change) c.changed = false;
+  return true;
+}
+
 void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
   const bool clear_change = globals[program.slots.clear_change_after_gen].value.logical;
   for (std::uint32_t i = first; i < first + count; ++i) {
@@ -214,21 +231,7 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
       }
       case ItemKind::Text: append(program.constants[item.a].text); break;
       case ItemKind::Value: {
-        if (line_open && item.global_cell != kNone) {
-          // The usual item, a global number in a format already parsed: no render() call.
-          Cell& c = globals[item.global_cell];
-          const DisplayFormat* f = c.value.type != Type::String ? known_format(item, c.value) : nullptr;
-          if (f) {
-            const std::size_t at = line.size();
-            write_number(program, item, *f, c.value, line);
-            if (separator_pending && line.size() > at) {
-              if (line[at] != ' ') line.insert(at, ' ');
-              separator_pending = false;
-            }
-            if (clear_change) c.changed = false;
-            break;
-          }
-        }
+        if (write_known_value(item, clear_change)) break;
         if (line_open) {
           // Straight into the line; the separator blank goes in front afterwards if the text needs one.
           const std::size_t at = line.size();
@@ -257,7 +260,14 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
         break;
       case ItemKind::Group: {
         // Its members follow it: a group that prints simply goes on with them (nested groups too).
-        if (group_required(item)) break;
+        if (group_required(item)) {
+          if (item.text_value_pair) {  // [' X'xpos]: both members here, as their own cases would
+            append(program.constants[program.items[i + 1].a].text);
+            if (write_known_value(program.items[i + 2], clear_change)) i += 2;
+            else ++i;  // the value goes the general way
+          }
+          break;
+        }
         const std::uint32_t members = item.a;
         if (item.has_gcode && globals[program.slots.gcode_space].value.logical) {
           // gcode_space: the suppressed G field becomes as many blanks as it would have printed (6.5).

@@ -235,6 +235,78 @@ xpos = 6.
                      "A X5.\nB X5."},
         GenerateCase{"tabs_and_case", "\tGCODE = 3\n\t{NB, 'G'Gcode}", "G3"}));
 
+// The items generate() writes itself (a global number whose format is parsed already, and a group
+// of a text then a value) against the same items where only render() can write them: an
+// expression, a local, a string, a format text changed between two lines, a separator owed.
+INSTANTIATE_TEST_SUITE_P(
+    WrittenInPlace, Generate,
+    testing::Values(
+        GenerateCase{"pair_and_expression_pair", R"(xpos = 1.5
+{nb, [' X'xpos], [' X'(xpos)], [' X', xpos]})",
+                     " X1.5 X1.5 X1.5"},
+        GenerateCase{"pair_after_block_number", R"(blknum_gen = TRUE
+blknum = 7
+xpos = -2.
+{nb, ['X'xpos]}
+{nb, [' X'xpos]})",
+                     "N7 X-2.\nN12 X-2."},
+        GenerateCase{"value_after_block_number_gets_the_blank", R"(blknum_gen = TRUE
+blknum = 7
+blknum_delta = 3
+xpos = 3.
+{nb, xpos}
+{nb, [xpos]}
+{nb, (xpos)})",
+                     "N7 3.\nN10 3.\nN13 3."},
+        GenerateCase{"name_format_changed_between_lines", R"(xpos = 1.23456
+{nb, ['X'xpos]}
+xpos_f = '5.1'
+{nb, ['X'xpos]}
+xpos_f = ''
+{nb, ['X'xpos]}
+xpos_f = '5.3'
+{nb, ['X'xpos]})",
+                     "X1.235\nX1.2\nX1.235\nX1.235"},
+        GenerateCase{"default_format_changed_between_lines", R"(global numeric r
+global integer k
+r = 2.5
+k = 4
+{nb, ['R'r], ' K'k}
+numeric_def_f = '5.0(p)'
+integer_def_f = '3.2'
+{nb, ['R'r], ' K'k}
+numeric_def_f = ''
+integer_def_f = ''
+{nb, ['R'r], ' K'k})",
+                     "R2.5 K4\nR3 K4.\nR2.5 K4"},
+        GenerateCase{"value_kinds_in_pairs", R"(global numeric r
+global integer k
+global logical b
+global string s
+local numeric here
+r = 0.25
+k = -3
+b = TRUE
+s = 'txt'
+here = 9.5
+{nb, ['R'r], ['K'k], ['B'b], ['S's], ['H'here]})",
+                     "R0.25K-3B1StxtH9.5"},
+        GenerateCase{"pair_in_constant_format", "xpos = 1.\n{nb, ['X'xpos:'5.3(p)'], [' Y'xpos:'2.2']}", "X1 Y1."},
+        GenerateCase{"pair_not_required", R"(xpos = 1.
+ypos = 2.
+change(xpos) = FALSE
+{nb, 'G1', [' X'xpos], [' Y'ypos]})",
+                     "G1 Y2."},
+        GenerateCase{"pair_clears_change", R"(clear_change_after_gen = 1
+xpos = 4.
+{nb, 'A', [' X'xpos]}
+{nb, 'B', [' X'xpos], [' X'(xpos)]})",
+                     "A X4.\nB"},
+        GenerateCase{"pair_opens_the_line", R"(xpos = 4.
+{[' X'xpos]}
+{nl, ['X'xpos], ' ', [xpos]})",
+                     " X4.\nX4. 4."}));
+
 TEST(Generate, BlockNumberTooBig) {
   EXPECT_EQ(run_error("@t\nblknum_gen = TRUE\nblknum = 32005\n{nb, 'X'}\nendp\n"), "4:2: error 452");
 }
