@@ -45,8 +45,9 @@ void Interpreter::State::enter(const Procedure& proc, std::uint32_t procedure, s
 
 Flow Interpreter::State::execute(std::uint32_t procedure) {
   std::uint32_t pc = program.procedures[procedure].first;
+  const Instruction* const code = program.code.data();  // read once: `current` is stored on every step
   for (;;) {
-    const Instruction& in = program.code[pc];
+    const Instruction& in = code[pc];
     current = &in;
     switch (in.op) {
       case OpCode::Nop: ++pc; break;

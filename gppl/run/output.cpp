@@ -208,8 +208,9 @@ void Interpreter::State::render(const GenItem& item, OutputLine& out) {
 
 void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
   const bool clear_change = globals[program.slots.clear_change_after_gen].value.logical;
+  const GenItem* const items = program.items.data();  // read once: the line's stores may alias it
   for (std::uint32_t i = first; i < first + count; ++i) {
-    const GenItem& item = program.items[i];
+    const GenItem& item = items[i];
     switch (item.kind) {
       case ItemKind::NewBlock: new_block(item.pos); break;
       case ItemKind::NewLine: new_line(); break;
@@ -262,8 +263,8 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
         // Its members follow it: a group that prints simply goes on with them (nested groups too).
         if (group_required(item)) {
           if (item.text_value_pair) {  // [' X'xpos]: both members here, as their own cases would
-            append(program.constants[program.items[i + 1].a].text);
-            if (write_known_value(program.items[i + 2], clear_change)) i += 2;
+            append(program.constants[items[i + 1].a].text);
+            if (write_known_value(items[i + 2], clear_change)) i += 2;
             else ++i;  // the value goes the general way
           }
           break;
@@ -273,7 +274,7 @@ void Interpreter::State::generate(std::uint32_t first, std::uint32_t count) {
           // gcode_space: the suppressed G field becomes as many blanks as it would have printed (6.5).
           piece.clear();
           for (std::uint32_t k = i + 1; k <= i + members; ++k) {
-            const GenItem& m = program.items[k];
+            const GenItem& m = items[k];
             if (m.kind == ItemKind::Text || m.kind == ItemKind::Value) render(m, piece);
           }
           if (!line_open) open_line();
