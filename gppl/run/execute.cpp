@@ -67,10 +67,15 @@ Flow Interpreter::State::execute(std::uint32_t procedure) {
       case OpCode::SetChange:
       case OpCode::SetActive: {
         // The value is stored, not tested: 0 or 1 only (error 420), unlike a condition.
-        Value& v = push_scratch();
-        eval(in.b, v);
-        const bool x = v.type == Type::Logical ? v.logical : to_logical(v);
-        pop_scratch();
+        bool x;
+        if (const Value* given = operand(program.nodes[in.b])) {  // `change(gcode) = TRUE`: no copy
+          x = given->type == Type::Logical ? given->logical : to_logical(*given);
+        } else {
+          Value& v = push_scratch();
+          eval(in.b, v);
+          x = v.type == Type::Logical ? v.logical : to_logical(v);
+          pop_scratch();
+        }
         Cell& c = element(program.refs[in.a]);
         (in.op == OpCode::SetChange ? c.changed : c.active) = x;
         ++pc;

@@ -189,6 +189,33 @@ TEST(FastAssign, ConstantsAndScalars) {
   EXPECT_NE(run_error("@t\n  global integer i\n  i = 1.0E10\nendp\n").find("error 410"), std::string::npos);
 }
 
+// `change(x) = value` and `active(x) = value` with a constant or a plain variable (read in place)
+// store what the evaluated form (`value + 0`) stores, and refuse what it refuses.
+TEST(FastAttributeAssign, SameAsEvaluated) {
+  const char* const values[] = {"TRUE", "FALSE", "1", "0", "1.0", "0.0", "one", "zero", "flag"};
+  for (const char* attribute : {"change", "active"}) {
+    for (const char* value : values) {
+      const std::string evaluated = std::string(value) == "flag" ? "(flag and TRUE)" : std::string("(") + value + " + 0)";
+      const std::string head = "@t\n  global integer g\n  global integer one\n  global numeric zero\n"
+                               "  global logical flag\n  one = 1\n  zero = 0.0\n  flag = TRUE\n  g = 5\n  ";
+      Post in_place(head + attribute + "(g) = " + value + "\n  r = " + attribute + "(g)\nendp\n");
+      Post evaluated_post(head + attribute + "(g) = " + evaluated + "\n  r = " + attribute + "(g)\nendp\n");
+      in_place.call("@t");
+      evaluated_post.call("@t");
+      EXPECT_EQ(in_place.get("r"), evaluated_post.get("r")) << attribute << " = " << value;
+    }
+    for (const char* refused : {"2", "0.5", "'TRUE'"}) {
+      const std::string source = std::string("@t\n  global integer g\n  ") + attribute + "(g) = " + refused + "\nendp\n";
+      const std::string evaluated =
+          std::string("@t\n  global integer g\n  ") + attribute + "(g) = (" + refused + " + " +
+          (refused[0] == '\'' ? "''" : "0") + ")\nendp\n";
+      EXPECT_NE(run_error(source), "no error") << source;
+      EXPECT_EQ(run_error(source).substr(run_error(source).find(':')), run_error(evaluated).substr(run_error(evaluated).find(':')))
+          << source;
+    }
+  }
+}
+
 // The host's typed assignments against assign() with a Value: same value, change and active, and
 // the same errors, whatever the variable's type (declared, implicit, untyped, added by the host).
 struct HostStep {
