@@ -52,9 +52,10 @@ make_job="$(dirname "${binaries[0]}")/make_job"
 role() {
   local top
   top="$(callgrind_annotate "$1" 2>/dev/null | sed -n '/file:function/,$p' | head -12)"
-  if grep -q 'TraceReader' <<<"$top"; then echo reader
+  # gppl first: the main thread of a flat job also skims the trace and forecasts its jobs
+  if grep -q 'gppl::' <<<"$top"; then echo post
+  elif grep -q 'TraceReader' <<<"$top"; then echo reader
   elif grep -q 'prp::' <<<"$top"; then echo filters
-  elif grep -q 'gppl::' <<<"$top"; then echo post
   else echo other; fi
 }
 

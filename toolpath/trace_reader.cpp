@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "toolpath/bounded_read.hpp"
+#include "toolpath/short_text.hpp"
 #include "toolpath/trace_syntax.hpp"
 
 namespace toolpath {
@@ -35,6 +36,22 @@ bool opens_header(std::string_view rest) {
 
 // A line (from its first byte that is not a blank) that starts a command: `@name`, `(N)@name`.
 bool starts_command(std::string_view rest) { return rest.front() == '@' || (rest.front() == '(' && opens_header(rest)); }
+
+// Whether a command name (`@` and identifier bytes) is @arc, @line or @rapid_move in any case, the
+// motions the skim leaves out, without a call. OR 0x20 makes letters lower case and leaves digits
+// alone; `@` and `_` become bytes no identifier has, the same on both sides.
+bool is_skimmed_motion(std::string_view n) {
+  constexpr std::uint64_t fold = 0x2020202020202020;
+  constexpr std::string_view arc = "@arc", line = "@line", rapid = "@rapid_move";
+  switch (n.size()) {
+    case 4: return (load_word(n, 0, 4) | fold) == (load_word(arc, 0, 4) | fold);
+    case 5: return (load_word(n, 0, 5) | fold) == (load_word(line, 0, 5) | fold);
+    case 11:
+      return (load_word(n, 0, 8) | fold) == (load_word(rapid, 0, 8) | fold) &&
+             (load_word(n, 3, 8) | fold) == (load_word(rapid, 3, 8) | fold);
+    default: return false;
+  }
+}
 
 }  // namespace
 
@@ -179,13 +196,7 @@ bool TraceReader::skipped_in_skim(std::string_view h) const {
   if (p == after_name || end - p < 3 || p[0] != '=' || p[1] != '=' || p[2] != '>') return false;
   if (depth >= 2) return true;
   if (!in_job_ || job_leading_) return false;
-  const std::string_view n(name, static_cast<std::size_t>(after_name - name));
-  switch (n.size()) {
-    case 4: return iequals(n, "@arc");
-    case 5: return iequals(n, "@line");
-    case 11: return iequals(n, "@rapid_move");
-    default: return false;
-  }
+  return is_skimmed_motion({name, static_cast<std::size_t>(after_name - name)});
 }
 
 // The skim's fast path: whole lines of the chunk that it leaves out, straight from the chunk. A

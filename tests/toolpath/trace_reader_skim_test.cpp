@@ -114,6 +114,18 @@ TEST(TraceReaderSkim, LeavesOutTheMotionsOfJobsAndTheDeeperCommands) {
   EXPECT_EQ(read(job, true).size(), 13u);  // the deeper command too is left out
 }
 
+// The three motion names in any case are left out; a name one byte away from one is kept.
+TEST(TraceReaderSkim, MotionNamesInAnyCaseAndTheirNeighbours) {
+  std::string job = "(1)@start_of_job    ==> job_name:'A'\n(1)@change_tool     ==> tool_number:4\n(1)@line ==> xpos:0\n";
+  for (const char* name : {"@arc", "@ARC", "@aRc", "@line", "@LINE", "@Line", "@rapid_move", "@RAPID_MOVE", "@Rapid_Move",
+                           "@arcs", "@ar_", "@ar", "@arc1", "@lin_", "@l1ne", "@line_", "@lines", "@rapid_mov",
+                           "@rapid_moves", "@rapid_m0ve", "@rapidXmove", "@rapid_movf", "@_rapid_move",
+                           "@qrc", "@Arc_", "@LINE1"})
+    job += std::string("(1)") + name + "              ==> xpos:1\n";
+  job += "(1)@end_of_job      ==>\n";
+  check(job);
+}
+
 TEST(TraceReaderSkim, KeepsWhatItCannotTellAtAGlance) {
   // A name that runs into `==>` may go on below: kept, so read in full. So is the block form.
   const std::string text =
