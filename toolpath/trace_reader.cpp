@@ -183,6 +183,20 @@ bool TraceReader::skipped_in_skim(std::string_view h) const {
   // The line end ('\n', '\r' or '\0') follows h in memory: the scans stop there.
   const char* p = h.data();
   const char* const end = p + h.size();
+  if (h.size() >= 16) {
+    // SolidCAM's own spelling, `(1)@line` and a blank, told by whole words; any other spelling
+    // (another depth, case or padding) is read below.
+    constexpr std::string_view line = "(1)@line", arc = "(1)@arc ", rapid = "(1)@rapid_move ";
+    const std::uint64_t head = load_word(h, 0, 8);
+    const char* after = nullptr;
+    if (head == load_word(line, 0, 8) && p[8] == ' ') after = p + 8;
+    else if (head == load_word(arc, 0, 8)) after = p + 7;
+    else if (head == load_word(rapid, 0, 8) && load_word(h, 8, 7) == load_word(rapid, 8, 7)) after = p + 14;
+    if (after) {
+      const char* q = skip_terminated_blanks(after, end);
+      return end - q >= 3 && q[0] == '=' && q[1] == '=' && q[2] == '>' && in_job_ && !job_leading_;
+    }
+  }
   if (*p != '(') return false;
   const char* const digits = ++p;
   unsigned depth = 0;

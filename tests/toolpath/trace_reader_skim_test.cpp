@@ -122,6 +122,13 @@ TEST(TraceReaderSkim, MotionNamesInAnyCaseAndTheirNeighbours) {
                            "@rapid_moves", "@rapid_m0ve", "@rapidXmove", "@rapid_movf", "@_rapid_move",
                            "@qrc", "@Arc_", "@LINE1"})
     job += std::string("(1)") + name + "              ==> xpos:1\n";
+  // The usual spellings with other paddings and depths, and short lines (a name that runs into
+  // `==>` is kept on purpose: KeepsWhatItCannotTellAtAGlance).
+  for (const char* header : {"(1)@line ==>", "(1)@arc ==> xpos:1", "(1)@arc ==>xpos:1 ypos:2 zpos:3", "(1)@line ==>xpos:1 y:1",
+                             "(1)@rapid_move ==>", "(1)@rapid_move  ==> xpos:1 ypos:2", "(1)@rapid_move\t==> xpos:1 ypos:2",
+                             "(1)@line\t\t\t==> xpos:1 ypos:2", "(2)@line            ==> xpos:1", "(0)@arc             ==> xpos:1",
+                             "(1)@line            ==>", "(1)@arc             ==>xpos:1 ypos:2"})
+    job += std::string(header) + "\n";
   job += "(1)@end_of_job      ==>\n";
   check(job);
 }
