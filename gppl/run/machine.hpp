@@ -169,11 +169,11 @@ struct Interpreter::State {
     mark_assigned(target, differs, change);
   }
   static void mark_assigned(Cell& target, bool differs, ChangeOverride change) {
-    switch (change) {
-      case ChangeOverride::Compute: target.changed = differs || !target.assigned; break;
-      case ChangeOverride::ForceChanged: target.changed = true; break;
-      case ChangeOverride::ForceUnchanged: target.changed = false; break;
-    }
+    // Compute tested first: a forced flag is rare (a switch tested it last).
+    if (change == ChangeOverride::Compute) [[likely]]
+      target.changed = differs || !target.assigned;
+    else
+      target.changed = change == ChangeOverride::ForceChanged;
     target.assigned = true;
     target.active = true;
   }
