@@ -200,25 +200,20 @@ private:
         },
         std::move(forecast));
     toolpath::PrefetchSource prefetched(*filtered);
-    // Three commands in rotation: the one before (its name is prev_command), the current one and
-    // the one after it (next_command, read before the current one runs): no name is copied.
-    std::array<toolpath::Command, 3> rotation;
-    for (toolpath::Command& c : rotation) c.keep_name_on_heap();
+    // The one before (its name is prev_command), the current one and the one after it
+    // (next_command, read before the current one runs) stay where the prefetch put them: no
+    // command is moved, no name copied.
+    static_assert(toolpath::PrefetchSource::kept >= 2);
     toolpath::Command* previous = nullptr;
-    toolpath::Command* current = &rotation[0];
-    toolpath::Command* following = &rotation[1];
-    toolpath::Command* spare = &rotation[2];
-    for (bool more = prefetched.next(*current); more;) {
+    for (toolpath::Command* current = prefetched.next_in_place(); current;) {
       ++summary.commands;
       sink_.begin_command(current->index, current->name, current->line);
-      more = prefetched.next(*following);
+      toolpath::Command* following = prefetched.next_in_place();
       guarded([&] {
         execute(*current, previous ? std::string_view(previous->name) : std::string_view{},
-                more ? std::string_view(following->name) : std::string_view{}, summary);
+                following ? std::string_view(following->name) : std::string_view{}, summary);
       });
-      toolpath::Command* reused = previous ? previous : spare;
       previous = std::exchange(current, following);
-      following = reused;
       if (options_.progress && (summary.commands & 4095) == 0) options_.progress(summary.commands);
     }
     sink_.end_commands();
