@@ -252,7 +252,7 @@ private:
   // What the engine needs to know about a command name, looked up once per name.
   struct CommandInfo {
     std::optional<gppl::ProcedureId> procedure;
-    ParameterBinding::Positions positions;  // parameters outside the catalogue, by position
+    ParameterBinding::Plan parameters;  // what each parameter does, by position
     // What execute() does besides assigning, decided once per name instead of by name tests.
     bool start_of_file = false;
     bool starts_body = false;
@@ -356,7 +356,7 @@ private:
     bool reset = engine_.options().reset_modal_memory_at_subroutines;
     if (reset && command_info.starts_body) interpreter_.reset_change_memory();
 
-    binding_.assign_all(command, command_info.positions);
+    binding_.assign_all(command, command_info.parameters);
     deactivate_missing(command, command_info);
     if (command_names_) {
       const std::array<std::string_view, 3> names{previous, command.name, next};
