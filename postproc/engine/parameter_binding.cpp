@@ -123,7 +123,7 @@ ParameterBinding::Step ParameterBinding::step_for(const toolpath::Parameter& p) 
   if (p.key == toolpath::ParamKey::none) return s;
   s.key = p.key;
   s.bound = &keyed(p);
-  if (s.bound->slot.id) s.id = *s.bound->slot.id;
+  if (s.bound->slot.id) s.variable = interpreter_.host_slot(*s.bound->slot.id);
   for (std::size_t k = 0; k < kKinds; ++k) s.actions[k] = action_for(*s.bound, static_cast<toolpath::ValueKind>(k));
   return s;
 }

@@ -61,8 +61,8 @@ public:
     toolpath::ParamKey key = toolpath::ParamKey::none;
     std::array<Action, kKinds> actions{Action::Positional, Action::Positional, Action::Positional,
                                        Action::Positional, Action::Positional};  // by ValueKind
-    gppl::VariableId id = 0;
-    Bound* bound = nullptr;  // the key's binding (by_key_ never moves)
+    gppl::Interpreter::HostSlot variable;  // for the assignments
+    Bound* bound = nullptr;                // the key's binding (by_key_ never moves)
   };
   // The steps and positional bindings of one command name.
   struct Plan {
@@ -88,7 +88,7 @@ public:
         if (s->key != p->key) [[unlikely]] *s = step_for(*p);
         const toolpath::Value& v = p->value;
         const Action action = s->actions[static_cast<std::size_t>(v.kind)];
-        if (action == Action::Numeric) interpreter_.assign_numeric(s->id, v.numeric, change_override(v.flag));  // most are
+        if (action == Action::Numeric) interpreter_.assign_numeric(s->variable, v.numeric, change_override(v.flag));  // most are
         else if (action != Action::Skip) assign_step(*s, action, v, plan.positions, static_cast<std::size_t>(p - first), p->name);
       }
     } catch (const gppl::Error& e) {
@@ -141,11 +141,11 @@ private:
     const gppl::ChangeOverride change = change_override(v.flag);
     switch (action) {
       case Action::Skip: break;
-      case Action::Integer: return interpreter_.assign_integer(s.id, v.integer, change);
-      case Action::Numeric: return interpreter_.assign_numeric(s.id, v.numeric, change);
-      case Action::Logical: return interpreter_.assign_logical(s.id, v.logical, change);
-      case Action::String: return interpreter_.assign_string(s.id, v.text, change);
-      case Action::Enum: return interpreter_.assign_integer(s.id, enum_code(*s.bound, v.text), change);
+      case Action::Integer: return interpreter_.assign_integer(s.variable, v.integer, change);
+      case Action::Numeric: return interpreter_.assign_numeric(s.variable, v.numeric, change);
+      case Action::Logical: return interpreter_.assign_logical(s.variable.id(), v.logical, change);
+      case Action::String: return interpreter_.assign_string(s.variable.id(), v.text, change);
+      case Action::Enum: return interpreter_.assign_integer(s.variable, enum_code(*s.bound, v.text), change);
       case Action::Element: return assign_element(*s.bound, v);
       case Action::Positional: return assign_bound(at_position(positions, position, name), v);
     }
