@@ -210,6 +210,21 @@ public:
   void assign_numeric(VariableId id, double value, ChangeOverride change = ChangeOverride::Compute);
   void assign_logical(VariableId id, bool value, ChangeOverride change = ChangeOverride::Compute);
   void assign_string(VariableId id, std::string_view value, ChangeOverride change = ChangeOverride::Compute);
+  // A host variable's cell, found once: assign_integer/assign_numeric through it skip the id's
+  // check and lookup (the engine's plan of a command name keeps one per parameter). Only
+  // host_slot() makes one, and a cell never moves, so it stays valid for the interpreter's life.
+  class HostSlot {
+  public:
+    VariableId id() const { return id_; }
+
+  private:
+    friend class Interpreter;
+    VariableId id_ = 0;
+    std::uint32_t cell_ = 0;
+  };
+  HostSlot host_slot(VariableId id) const;  // throws std::out_of_range for an id of no variable
+  void assign_integer(HostSlot slot, std::int64_t value, ChangeOverride change = ChangeOverride::Compute);
+  void assign_numeric(HostSlot slot, double value, ChangeOverride change = ChangeOverride::Compute);
   // assign_string() of texts[i] to ids[i] in one call (prev_command, current_command, next_command).
   void assign_strings(std::span<const VariableId> ids, std::span<const std::string_view> texts);
   // Host assignment to one element of a host array (chng_cond<<3,n>>); indices are 1-based.

@@ -133,18 +133,42 @@ void Interpreter::assign(VariableId id, const Value& value, ChangeOverride chang
 }
 
 void Interpreter::assign_integer(VariableId id, std::int64_t value, ChangeOverride change) {
-  if (!state_->assign_in_place<&Value::integer>(id, Type::Integer, value, change))
+  State& s = *state_;
+  if (!s.assign_in_place<&Value::integer>(s.typed_host_cell(id, Type::Integer), id, value, change))
     assign_slowly(*this, id, value, Value::of_integer, change);
 }
 
 void Interpreter::assign_numeric(VariableId id, double value, ChangeOverride change) {
-  if (!state_->assign_in_place<&Value::numeric>(id, Type::Numeric, value, change))
+  State& s = *state_;
+  if (!s.assign_in_place<&Value::numeric>(s.typed_host_cell(id, Type::Numeric), id, value, change))
     assign_slowly(*this, id, value, Value::of_numeric, change);
 }
 
 void Interpreter::assign_logical(VariableId id, bool value, ChangeOverride change) {
-  if (!state_->assign_in_place<&Value::logical>(id, Type::Logical, value, change))
+  State& s = *state_;
+  if (!s.assign_in_place<&Value::logical>(s.typed_host_cell(id, Type::Logical), id, value, change))
     assign_slowly(*this, id, value, Value::of_logical, change);
+}
+
+Interpreter::HostSlot Interpreter::host_slot(VariableId id) const {
+  const State& s = *state_;
+  if (id >= s.host_cells.size()) throw std::out_of_range(fmt::format("no variable with id {}", id));
+  HostSlot slot;
+  slot.id_ = id;
+  slot.cell_ = s.host_cells[id];
+  return slot;
+}
+
+void Interpreter::assign_integer(HostSlot slot, std::int64_t value, ChangeOverride change) {
+  State& s = *state_;
+  if (!s.assign_in_place<&Value::integer>(s.typed_cell(slot.cell_, Type::Integer), slot.id_, value, change))
+    assign_slowly(*this, slot.id_, value, Value::of_integer, change);
+}
+
+void Interpreter::assign_numeric(HostSlot slot, double value, ChangeOverride change) {
+  State& s = *state_;
+  if (!s.assign_in_place<&Value::numeric>(s.typed_cell(slot.cell_, Type::Numeric), slot.id_, value, change))
+    assign_slowly(*this, slot.id_, value, Value::of_numeric, change);
 }
 
 void Interpreter::assign_string(VariableId id, std::string_view value, ChangeOverride change) {

@@ -1,5 +1,6 @@
 #include "toolpath/prefetch.hpp"
 
+#include <algorithm>
 #include <utility>
 
 namespace toolpath {
@@ -7,7 +8,7 @@ namespace toolpath {
 PrefetchSource::PrefetchSource(CommandSource& inner, std::size_t batch_size, std::size_t batches)
     : inner_(inner), ring_(batches < 2 ? 2 : batches) {
   for (Batch& b : ring_) {
-    b.commands.resize(batch_size < 1 ? 1 : batch_size);
+    b.commands.resize(batch_size <= kept ? kept + 1 : batch_size);  // see released_
     for (Command& c : b.commands) c.keep_name_on_heap();
   }
   worker_ = std::thread([this] { work(); });
@@ -59,42 +60,57 @@ void PrefetchSource::work() {
 }
 
 bool PrefetchSource::next(Command& out) {
-  for (;;) {
-    if (holding_) {
-      Batch& b = *current_;
-      if (position_ < b.count) {
-        swap(out, b.commands[position_++]);  // the worker refills the slot with out's buffers
-        return true;
-      }
-      if (b.last) {
-        finished_ = true;
-        holding_ = false;
-        if (b.error) std::rethrow_exception(std::exchange(b.error, nullptr));
-        return false;
-      }
-      bool wake;
-      {
-        std::lock_guard lock(mutex_);
-        ++released_;
-        // A waiting side is woken once half of the ring is free (worker) or filled (reader), not at
-        // every batch: it then handles several batches in one go instead of trading a wake-up per
-        // batch with the other side.
-        wake = worker_waits_ && 2 * (filled_ - released_) <= ring_.size();
-      }
-      if (wake) space_.notify_one();
-      holding_ = false;
+  Command* c = next_in_place();
+  if (!c) return false;
+  swap(out, *c);  // the worker refills the slot with out's buffers
+  return true;
+}
+
+Command* PrefetchSource::advance() {
+  if (current_) {
+    Batch& b = *current_;
+    if (position_ < b.count) {  // `kept` commands into the batch: the one before may go
+      release_before();
+      limit_ = b.count;
+      return &b.commands[position_++];
     }
-    if (finished_) return false;
+    if (b.last) {
+      finished_ = true;
+      current_ = nullptr;
+      limit_ = position_ = 0;
+      if (b.error) std::rethrow_exception(std::exchange(b.error, nullptr));
+      return nullptr;
+    }
+    // Read to its end: held while its last commands may still be in use.
+    holding_before_ = true;
+  }
+  if (finished_) return nullptr;
+  {
     std::unique_lock lock(mutex_);
-    if (filled_ == released_) {
+    if (filled_ == taken_) {
       reader_waits_ = true;
-      data_.wait(lock, [&] { return worker_done_ || 2 * (filled_ - released_) >= ring_.size(); });
+      data_.wait(lock, [&] { return filled_ > taken_ && (worker_done_ || 2 * (filled_ - released_) >= ring_.size()); });
       reader_waits_ = false;
     }
-    holding_ = true;
-    current_ = &ring_[released_ % ring_.size()];
-    position_ = 0;
+    current_ = &ring_[taken_++ % ring_.size()];
   }
+  position_ = 0;
+  limit_ = holding_before_ ? std::min(current_->count, kept) : current_->count;
+  return next_in_place();
+}
+
+void PrefetchSource::release_before() {
+  bool wake;
+  {
+    std::lock_guard lock(mutex_);
+    ++released_;
+    // A waiting side is woken once half of the ring is free (worker) or filled (reader), not at
+    // every batch: it then handles several batches in one go instead of trading a wake-up per
+    // batch with the other side.
+    wake = worker_waits_ && 2 * (filled_ - released_) <= ring_.size();
+  }
+  holding_before_ = false;
+  if (wake) space_.notify_one();
 }
 
 }  // namespace toolpath

@@ -9,6 +9,9 @@
 // steady state. An exception thrown by the source is rethrown by next() where the stream reached
 // it, after the commands read before it. `inner` is only used by the worker until the destructor
 // has stopped it.
+//
+// next_in_place() hands out the command where it lies in the ring instead (no swap: the engine
+// reads each command there, with the one before and the one after it).
 #pragma once
 
 #include <condition_variable>
@@ -31,6 +34,15 @@ public:
 
   bool next(Command& out) override;
 
+  // The next command in its ring slot, which the caller may change; nullptr at the end (or after
+  // the source's exception, rethrown here). It and the `kept` commands returned before it stay in
+  // place until the next call. Use either this or next() on one source, not both.
+  static constexpr std::size_t kept = 2;
+  Command* next_in_place() {
+    if (position_ < limit_) return &current_->commands[position_++];
+    return advance();
+  }
+
 private:
   struct Batch {
     std::vector<Command> commands;
@@ -40,12 +52,16 @@ private:
   };
 
   void work();
+  Command* advance();  // next_in_place() at the end of a batch, or where the batch before is released
+  void release_before();
 
   CommandSource& inner_;
   std::vector<Batch> ring_;
-  // Batches filled by the worker and released by the reader, counted from the start: the worker
-  // fills ring_[filled_ % size] while fewer than size are unreleased; the reader reads ring_[released_ % size].
-  std::size_t filled_ = 0, released_ = 0;
+  // Batches filled by the worker, taken and released by the reader, counted from the start: the
+  // worker fills ring_[filled_ % size] while fewer than size are unreleased; the reader reads
+  // ring_[(taken_ - 1) % size]. The batch before it is released only once the reader is `kept`
+  // commands into this one (every batch but the last holds more than `kept`).
+  std::size_t filled_ = 0, taken_ = 0, released_ = 0;
   bool stop_ = false;
   // Each side is woken only when it sleeps: a notify per batch costs a futex call even with nobody
   // waiting, and on two cores the three stages of a run usually find their batch ready.
@@ -54,10 +70,11 @@ private:
   std::mutex mutex_;
   std::condition_variable space_;  // the worker waits for a released batch
   std::condition_variable data_;   // the reader waits for a filled batch
-  // The reader's side (only next() touches these).
-  bool holding_ = false;  // ring_[released_ % size] is being read
-  Batch* current_ = nullptr;  // that batch (no division per command)
-  std::size_t position_ = 0;
+  // The reader's side (only next() and next_in_place() touch these).
+  Batch* current_ = nullptr;  // the batch being read (no division per command); nullptr before the first
+  std::size_t position_ = 0;  // its next command
+  std::size_t limit_ = 0;     // where advance() is due: its end, or `kept` while the batch before is held
+  bool holding_before_ = false;  // the batch before current_ is not released yet
   bool finished_ = false;
   std::thread worker_;  // last: starts once everything above is ready
 };

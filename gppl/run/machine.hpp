@@ -134,7 +134,10 @@ struct Interpreter::State {
   // The host's cell of `id` when it is typed and holds a `type` (assignable without conversion).
   Cell* typed_host_cell(VariableId id, Type type) {
     if (id >= host_cells.size()) return nullptr;
-    Cell& c = globals[host_cells[id]];
+    return typed_cell(host_cells[id], type);
+  }
+  Cell* typed_cell(std::uint32_t index, Type type) {
+    Cell& c = globals[index];
     return c.typed && c.value.type == type ? &c : nullptr;
   }
   void note_host_assignment(VariableId id) {  // for the trace's dump of what the host set
@@ -143,9 +146,9 @@ struct Interpreter::State {
   void note_traced_assignment(VariableId id);
   // The host's typed assignment of a number or logical (`Field` of Value) when the cell is typed
   // and holds `type`; false when the general path must do it (conversion, untyped, no such cell).
+  // `c`: typed_host_cell(id, type) or the same cell found before (Interpreter::HostSlot).
   template <auto Field, typename T>
-  bool assign_in_place(VariableId id, Type type, T value, ChangeOverride change) {
-    Cell* c = typed_host_cell(id, type);
+  bool assign_in_place(Cell* c, VariableId id, T value, ChangeOverride change) {
     if (!c) return false;
     const bool differs = c->value.*Field != value;
     c->value.*Field = value;
@@ -188,11 +191,11 @@ struct Interpreter::State {
     mark_assigned(target, differs, change);
   }
   static void mark_assigned(Cell& target, bool differs, ChangeOverride change) {
-    switch (change) {
-      case ChangeOverride::Compute: target.changed = differs || !target.assigned; break;
-      case ChangeOverride::ForceChanged: target.changed = true; break;
-      case ChangeOverride::ForceUnchanged: target.changed = false; break;
-    }
+    // Compute tested first: a forced flag is rare (a switch tested it last).
+    if (change == ChangeOverride::Compute) [[likely]]
+      target.changed = differs || !target.assigned;
+    else
+      target.changed = change == ChangeOverride::ForceChanged;
     target.assigned = true;
     target.active = true;
   }

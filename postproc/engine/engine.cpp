@@ -200,25 +200,20 @@ private:
         },
         std::move(forecast));
     toolpath::PrefetchSource prefetched(*filtered);
-    // Three commands in rotation: the one before (its name is prev_command), the current one and
-    // the one after it (next_command, read before the current one runs): no name is copied.
-    std::array<toolpath::Command, 3> rotation;
-    for (toolpath::Command& c : rotation) c.keep_name_on_heap();
+    // The one before (its name is prev_command), the current one and the one after it
+    // (next_command, read before the current one runs) stay where the prefetch put them: no
+    // command is moved, no name copied.
+    static_assert(toolpath::PrefetchSource::kept >= 2);
     toolpath::Command* previous = nullptr;
-    toolpath::Command* current = &rotation[0];
-    toolpath::Command* following = &rotation[1];
-    toolpath::Command* spare = &rotation[2];
-    for (bool more = prefetched.next(*current); more;) {
+    for (toolpath::Command* current = prefetched.next_in_place(); current;) {
       ++summary.commands;
       sink_.begin_command(current->index, current->name, current->line);
-      more = prefetched.next(*following);
+      toolpath::Command* following = prefetched.next_in_place();
       guarded([&] {
         execute(*current, previous ? std::string_view(previous->name) : std::string_view{},
-                more ? std::string_view(following->name) : std::string_view{}, summary);
+                following ? std::string_view(following->name) : std::string_view{}, summary);
       });
-      toolpath::Command* reused = previous ? previous : spare;
       previous = std::exchange(current, following);
-      following = reused;
       if (options_.progress && (summary.commands & 4095) == 0) options_.progress(summary.commands);
     }
     sink_.end_commands();
@@ -257,7 +252,7 @@ private:
   // What the engine needs to know about a command name, looked up once per name.
   struct CommandInfo {
     std::optional<gppl::ProcedureId> procedure;
-    ParameterBinding::Positions positions;  // parameters outside the catalogue, by position
+    ParameterBinding::Plan parameters;  // what each parameter does, by position
     // What execute() does besides assigning, decided once per name instead of by name tests.
     bool start_of_file = false;
     bool starts_body = false;
@@ -361,7 +356,7 @@ private:
     bool reset = engine_.options().reset_modal_memory_at_subroutines;
     if (reset && command_info.starts_body) interpreter_.reset_change_memory();
 
-    binding_.assign_all(command, command_info.positions);
+    binding_.assign_all(command, command_info.parameters);
     deactivate_missing(command, command_info);
     if (command_names_) {
       const std::array<std::string_view, 3> names{previous, command.name, next};

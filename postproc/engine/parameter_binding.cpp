@@ -89,14 +89,62 @@ ParameterBinding::Bound& ParameterBinding::at_position(Positions& positions, std
   return b;
 }
 
-void ParameterBinding::assign_enum(Bound& b, const toolpath::Value& v, gppl::ChangeOverride change) {
-  const gppl::VariableId id = *b.slot.id;
-  if (b.slot.is_string) return interpreter_.assign_string(id, v.text, change);
-  if (b.enum_word.empty() || !toolpath::iequals(b.enum_word, v.text)) {  // words are looked up without case
-    b.enum_code = enums_.code(v.text);
-    b.enum_word = v.text;
+void ParameterBinding::assign_each(const toolpath::Command& command, Positions& positions) {
+  const std::size_t count = command.parameters.size();
+  std::size_t i = 0;
+  try {
+    for (; i < count; ++i) {
+      const toolpath::Parameter& p = command.parameters[i];
+      assign_bound(p.key != toolpath::ParamKey::none ? keyed(p) : at_position(positions, i, p.name), p.value);
+    }
+  } catch (const gppl::Error& e) {
+    fail(command, command.parameters[i], e);
   }
-  interpreter_.assign_integer(id, b.enum_code, change);
+}
+
+void ParameterBinding::assign(Bound& b, const toolpath::Value& v) {
+  if (static_cast<std::uint8_t>(v.kind) == b.slot.skipped_kind) return;
+  const gppl::VariableId id = *b.slot.id;
+  const gppl::ChangeOverride change = change_override(v.flag);
+  switch (v.kind) {
+    case toolpath::ValueKind::Integer: return interpreter_.assign_integer(id, v.integer, change);
+    case toolpath::ValueKind::Numeric: return interpreter_.assign_numeric(id, v.numeric, change);
+    case toolpath::ValueKind::Logical: return interpreter_.assign_logical(id, v.logical, change);
+    case toolpath::ValueKind::String: return interpreter_.assign_string(id, v.text, change);
+    case toolpath::ValueKind::Enum:
+      if (b.slot.is_string) return interpreter_.assign_string(id, v.text, change);
+      return interpreter_.assign_integer(id, enum_code(b, v.text), change);
+  }
+}
+
+// What assign_bound() does with each kind of value under p's name, once for the steps that follow.
+ParameterBinding::Step ParameterBinding::step_for(const toolpath::Parameter& p) {
+  Step s;
+  if (p.key == toolpath::ParamKey::none) return s;
+  s.key = p.key;
+  s.bound = &keyed(p);
+  if (s.bound->slot.id) s.variable = interpreter_.host_slot(*s.bound->slot.id);
+  for (std::size_t k = 0; k < kKinds; ++k) s.actions[k] = action_for(*s.bound, static_cast<toolpath::ValueKind>(k));
+  return s;
+}
+
+ParameterBinding::Action ParameterBinding::action_for(const Bound& b, toolpath::ValueKind kind) const {
+  if (!b.slot.id) return b.array ? Action::Element : Action::Skip;
+  if (static_cast<std::uint8_t>(kind) == b.slot.skipped_kind) return Action::Skip;
+  switch (kind) {
+    case toolpath::ValueKind::Integer: return Action::Integer;
+    case toolpath::ValueKind::Numeric: return Action::Numeric;
+    case toolpath::ValueKind::Logical: return Action::Logical;
+    case toolpath::ValueKind::String: return Action::String;
+    case toolpath::ValueKind::Enum: return b.slot.is_string ? Action::String : Action::Enum;
+  }
+  return Action::Skip;
+}
+
+std::int64_t ParameterBinding::other_word(Bound& b, std::string_view word) {
+  if (b.enum_word.empty() || !toolpath::iequals(b.enum_word, word)) b.enum_code = enums_.code(word);
+  b.enum_word = word;
+  return b.enum_code;
 }
 
 void ParameterBinding::fail(const toolpath::Command& command, const toolpath::Parameter& p, const gppl::Error& e) const {

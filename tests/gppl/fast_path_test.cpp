@@ -216,8 +216,9 @@ TEST(FastAttributeAssign, SameAsEvaluated) {
   }
 }
 
-// The host's typed assignments against assign() with a Value: same value, change and active, and
-// the same errors, whatever the variable's type (declared, implicit, untyped, added by the host).
+// The host's typed assignments (by id, and by HostSlot) against assign() with a Value: same value,
+// change and active, and the same errors, whatever the variable's type (declared, implicit,
+// untyped, added by the host).
 struct HostStep {
   gppl::Value value;
   gppl::ChangeOverride change;
@@ -230,10 +231,14 @@ std::string describe(const gppl::Interpreter& run, gppl::VariableId id) {
          " active=" + std::to_string(run.active(id));
 }
 
-void typed_assign(gppl::Interpreter& run, gppl::VariableId id, const gppl::Value& v, gppl::ChangeOverride change) {
+// With `slot`, integers and numbers go through the variable's HostSlot.
+void typed_assign(gppl::Interpreter& run, gppl::VariableId id, const gppl::Value& v, gppl::ChangeOverride change,
+                  bool slot = false) {
   switch (v.type) {
-    case gppl::Type::Integer: return run.assign_integer(id, v.integer, change);
-    case gppl::Type::Numeric: return run.assign_numeric(id, v.numeric, change);
+    case gppl::Type::Integer:
+      return slot ? run.assign_integer(run.host_slot(id), v.integer, change) : run.assign_integer(id, v.integer, change);
+    case gppl::Type::Numeric:
+      return slot ? run.assign_numeric(run.host_slot(id), v.numeric, change) : run.assign_numeric(id, v.numeric, change);
     case gppl::Type::Logical: return run.assign_logical(id, v.logical, change);
     case gppl::Type::String: return run.assign_string(id, v.text, change);
   }
@@ -253,26 +258,28 @@ TEST(FastHostAssign, SameAsValueAssignment) {
       {string("a longer text than fits in place"), gppl::ChangeOverride::Compute},
       {numeric(2.0), gppl::ChangeOverride::Compute},        {numeric(1e12), gppl::ChangeOverride::Compute},
       {integer(7), gppl::ChangeOverride::ForceChanged}};
-  for (const char* variable : {"gi", "gn", "gl", "gs", "implicit", "added_by_host"}) {
-    Post by_value(source), typed(source);
-    by_value.run->start();
-    typed.run->start();
-    const gppl::VariableId a = by_value.run->add_variable(variable), b = typed.run->add_variable(variable);
-    ASSERT_EQ(a, b);
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-      std::string error_a, error_b;
-      try {
-        by_value.run->assign(a, steps[i].value, steps[i].change);
-      } catch (const gppl::Error& e) {
-        error_a = std::to_string(e.number()) + " " + e.text();
+  for (bool slot : {false, true}) {
+    for (const char* variable : {"gi", "gn", "gl", "gs", "implicit", "added_by_host"}) {
+      Post by_value(source), typed(source);
+      by_value.run->start();
+      typed.run->start();
+      const gppl::VariableId a = by_value.run->add_variable(variable), b = typed.run->add_variable(variable);
+      ASSERT_EQ(a, b);
+      for (std::size_t i = 0; i < steps.size(); ++i) {
+        std::string error_a, error_b;
+        try {
+          by_value.run->assign(a, steps[i].value, steps[i].change);
+        } catch (const gppl::Error& e) {
+          error_a = std::to_string(e.number()) + " " + e.text();
+        }
+        try {
+          typed_assign(*typed.run, b, steps[i].value, steps[i].change, slot);
+        } catch (const gppl::Error& e) {
+          error_b = std::to_string(e.number()) + " " + e.text();
+        }
+        EXPECT_EQ(error_a, error_b) << variable << " step " << i << (slot ? " (slot)" : "");
+        EXPECT_EQ(describe(*by_value.run, a), describe(*typed.run, b)) << variable << " step " << i << (slot ? " (slot)" : "");
       }
-      try {
-        typed_assign(*typed.run, b, steps[i].value, steps[i].change);
-      } catch (const gppl::Error& e) {
-        error_b = std::to_string(e.number()) + " " + e.text();
-      }
-      EXPECT_EQ(error_a, error_b) << variable << " step " << i;
-      EXPECT_EQ(describe(*by_value.run, a), describe(*typed.run, b)) << variable << " step " << i;
     }
   }
 }

@@ -1,5 +1,6 @@
 // PrefetchSource: the same commands in the same order as its source, whatever the batch size; the
-// source's exception at the place it happened; a stop in the middle of a stream.
+// source's exception at the place it happened; a stop in the middle of a stream. next_in_place()
+// gives what next() gives, and keeps the commands it promises in place while the worker races ahead.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -55,6 +56,45 @@ TEST(PrefetchSource, SameCommandsInOrder) {
     while (prefetched.next(c)) expect_numbered(c, n++);
     EXPECT_EQ(n, s.commands);
     EXPECT_FALSE(prefetched.next(c));  // and stays at the end
+  }
+}
+
+// Reads like next(), and checks after each call that the `kept` commands before are still intact:
+// small batches in a small ring have the worker refill every slot it may as soon as it may.
+TEST(PrefetchSource, InPlaceKeepsTheCommandsBefore) {
+  const Shape shapes[] = {{0, 4, 2}, {1, 1, 2}, {2, 1, 2}, {3, 2, 2}, {5, 3, 2}, {7, 4, 2},
+                          {1000, 1, 2}, {1000, 3, 3}, {1000, 4, 2}, {100000, 256, 4}};
+  for (const Shape& s : shapes) {
+    SCOPED_TRACE(std::to_string(s.commands) + " commands, batches of " + std::to_string(s.batch_size));
+    Numbered source(s.commands);
+    PrefetchSource prefetched(source, s.batch_size, s.batches);
+    std::vector<const Command*> returned;
+    while (const Command* c = prefetched.next_in_place()) {
+      returned.push_back(c);
+      const std::size_t n = returned.size();
+      for (std::size_t back = 0; back <= PrefetchSource::kept && back < n; ++back)
+        expect_numbered(*returned[n - 1 - back], n - 1 - back);
+      if (::testing::Test::HasFailure()) return;
+    }
+    EXPECT_EQ(returned.size(), s.commands);
+    EXPECT_EQ(prefetched.next_in_place(), nullptr);  // and stays at the end
+  }
+}
+
+TEST(PrefetchSource, InPlaceRethrowsWhereTheSourceFailed) {
+  for (std::size_t fail_after : {0u, 1u, 3u, 4u, 5u, 17u}) {
+    SCOPED_TRACE(fail_after);
+    Numbered source(100, fail_after);
+    PrefetchSource prefetched(source, 4, 2);
+    std::size_t n = 0;
+    try {
+      while (const Command* c = prefetched.next_in_place()) expect_numbered(*c, n++);
+      ADD_FAILURE() << "no exception";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "broken at " + std::to_string(fail_after));
+    }
+    EXPECT_EQ(n, fail_after);
+    EXPECT_EQ(prefetched.next_in_place(), nullptr);
   }
 }
 
