@@ -7,6 +7,15 @@ namespace toolpath {
 
 PrefetchSource::PrefetchSource(CommandSource& inner, std::size_t batch_size, std::size_t batches)
     : inner_(inner), ring_(batches < 2 ? 2 : batches) {
+  start(batch_size);
+}
+
+PrefetchSource::PrefetchSource(CommandSource& inner, Command&& first, std::size_t batch_size, std::size_t batches)
+    : inner_(inner), first_(std::move(first)), has_first_(true), ring_(batches < 2 ? 2 : batches) {
+  start(batch_size);
+}
+
+void PrefetchSource::start(std::size_t batch_size) {
   for (Batch& b : ring_) {
     b.commands.resize(batch_size <= kept ? kept + 1 : batch_size);  // see released_
     for (Command& c : b.commands) c.keep_name_on_heap();
@@ -40,6 +49,10 @@ void PrefetchSource::work() {
     b.count = 0;
     b.last = false;
     b.error = nullptr;
+    if (has_first_) {
+      swap(b.commands[b.count++], first_);
+      has_first_ = false;
+    }
     try {
       while (b.count < b.commands.size() && inner_.next(b.commands[b.count])) ++b.count;
       b.last = b.count < b.commands.size();

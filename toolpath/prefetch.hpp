@@ -28,6 +28,9 @@ namespace toolpath {
 class PrefetchSource final : public CommandSource {
 public:
   explicit PrefetchSource(CommandSource& inner, std::size_t batch_size = 256, std::size_t batches = 4);
+  // Starts with `first`, a command already taken from `inner` (to look at it before the rest):
+  // what a LookaheadSource in between would do, without its call on every command.
+  PrefetchSource(CommandSource& inner, Command&& first, std::size_t batch_size = 256, std::size_t batches = 4);
   ~PrefetchSource() override;
   PrefetchSource(const PrefetchSource&) = delete;
   PrefetchSource& operator=(const PrefetchSource&) = delete;
@@ -51,11 +54,14 @@ private:
     std::exception_ptr error;  // what the source threw after `count` commands
   };
 
+  void start(std::size_t batch_size);  // the ring's commands, then the worker
   void work();
   Command* advance();  // next_in_place() at the end of a batch, or where the batch before is released
   void release_before();
 
   CommandSource& inner_;
+  Command first_;
+  bool has_first_ = false;  // first_ goes at the head of the first batch
   std::vector<Batch> ring_;
   // Batches filled by the worker, taken and released by the reader, counted from the start: the
   // worker fills ring_[filled_ % size] while fewer than size are unreleased; the reader reads

@@ -17,21 +17,6 @@ public:
   virtual bool next(Command& out) = 0;
 };
 
-// The commands of the stream only (depth 0 and 1): deeper ones record calls the original post made
-// itself (Command::is_stream_command).
-class StreamCommands final : public CommandSource {
-public:
-  explicit StreamCommands(CommandSource& inner) : inner_(inner) {}
-  bool next(Command& out) override {
-    while (inner_.next(out))
-      if (out.is_stream_command()) return true;
-    return false;
-  }
-
-private:
-  CommandSource& inner_;
-};
-
 // Wraps a source so that the following command can be looked at before it is taken
 // (the engine sets `next_command` from it).
 class LookaheadSource final : public CommandSource {

@@ -34,6 +34,10 @@ namespace {
 using toolpath::iequals;
 
 // The unit system a job states in its @start_of_file (`inch_system`); metric when it does not.
+struct NoCommands final : toolpath::CommandSource {
+  bool next(toolpath::Command&) override { return false; }
+};
+
 prp::Units job_units(const toolpath::Command* first) {
   if (!first || !iequals(first->name, "@start_of_file")) return prp::Units::Metric;
   const toolpath::Value* inch = first->find("inch_system");
@@ -165,10 +169,9 @@ public:
     // Three stages overlap: reading the job, the PRP's filters, the post. Reading gets a thread of
     // its own because a filter may have to take in the whole job before it hands anything on
     // (gen_procs: @start_of_file names the last subroutine label).
-    toolpath::StreamCommands stream(input);
     StreamWarnings warnings(options_.warnings, options_.input_name, two_passes);
     try {
-      run_stream(stream, summary, warnings, two_passes);
+      run_stream(input, summary, warnings, two_passes);
     } catch (const prp::ForecastMismatch&) {
       throw;  // not said: the run starts again
     } catch (...) {
@@ -180,21 +183,28 @@ public:
   }
 
 private:
-  void run_stream(toolpath::CommandSource& stream, RunSummary& summary, StreamWarnings& warnings, bool two_passes) {
+  void run_stream(toolpath::CommandSource& input, RunSummary& summary, StreamWarnings& warnings, bool two_passes) {
     // Wrong values stop at their own position; a command without what it needs at its header.
-    ParameterCheck checked(stream, options_.input_name,
-                           [&](const toolpath::SourcePosition& at, const std::string& m) { warnings(static_cast<std::uint32_t>(at.line), m); });
+    // Only the stream is posted: the original post's own deeper calls are left out here.
+    ParameterCheck checked(input, options_.input_name,
+                           [&](const toolpath::SourcePosition& at, const std::string& m) { warnings(static_cast<std::uint32_t>(at.line), m); },
+                           ParameterCheck::Deeper::Leave);
     // The PRP half follows the job's unit system, which the first command states; it must be
     // chosen before the filters compare anything against the PRP's tolerances.
-    toolpath::LookaheadSource first(checked);
-    summary.units = engine_.options().units.value_or(job_units(first.peek()));
+    toolpath::Command first;
+    first.keep_name_on_heap();
+    const bool any = checked.next(first);
+    summary.units = engine_.options().units.value_or(job_units(any ? &first : nullptr));
     machine_ = &engine_.machine(summary.units);
     retreat_.emplace(*machine_);
     refuse_procedures_without_calls();
     std::shared_ptr<prp::JobForecast> forecast = two_passes ? forecast_jobs() : nullptr;
-    toolpath::PrefetchSource read_ahead(first);
+    NoCommands ended;  // an empty job: the reader is not asked again
+    std::optional<toolpath::PrefetchSource> read_ahead;
+    if (any) read_ahead.emplace(checked, std::move(first));
+    else read_ahead.emplace(ended);
     auto filtered = prp::build_filter_chain(
-        *machine_, read_ahead,
+        *machine_, *read_ahead,
         [&](const toolpath::Command& c, const std::string& m) {
           warnings(c.line, fmt::format("command #{} {}: {}", c.index, c.name, m));
         },
@@ -241,11 +251,10 @@ private:
     auto* reader = dynamic_cast<toolpath::TraceReader*>(source.get());
     if (!reader) return nullptr;  // only a trace file can be skimmed
     reader->skim_job_motions();
-    toolpath::StreamCommands stream(*reader);
     // Checked as the full pass checks, so that the post never runs a value the check would refuse
     // (the main program goes to it before the full pass reads that far). A check that fails here,
     // as the skim left out what an earlier command gave, means one pass.
-    ParameterCheck checked(stream, options_.input_name);
+    ParameterCheck checked(*reader, options_.input_name, {}, ParameterCheck::Deeper::Leave);
     return prp::forecast_jobs(*machine_, checked);
   }
 

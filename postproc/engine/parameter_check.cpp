@@ -225,8 +225,8 @@ std::string kind_mismatch(ParameterKind kind, const toolpath::Value& v) {
   return {};
 }
 
-ParameterCheck::ParameterCheck(toolpath::CommandSource& inner, std::string file_name, Warn warn)
-    : inner_(inner), file_(std::move(file_name)), warn_(std::move(warn)) {}
+ParameterCheck::ParameterCheck(toolpath::CommandSource& inner, std::string file_name, Warn warn, Deeper deeper)
+    : inner_(inner), file_(std::move(file_name)), warn_(std::move(warn)), leave_deeper_(deeper == Deeper::Leave) {}
 
 int ParameterCheck::unkeyed_kind(const toolpath::Parameter& p) {
   const std::string& name = p.name;
@@ -249,8 +249,11 @@ int ParameterCheck::unkeyed_kind(const toolpath::Parameter& p) {
 // value kinds its catalogue kind takes as they are (see key_checks). Anything else, and every
 // parameter without a key, goes to check_slow, which applies the general rule.
 bool ParameterCheck::next(toolpath::Command& out) {
-  if (!inner_.next(out)) return false;
-  if (!out.is_stream_command()) return true;  // what the original post did itself: kept as written
+  do {
+    if (!inner_.next(out)) return false;
+    // What the original post did itself: kept as written, or left out.
+    if (!out.is_stream_command() && !leave_deeper_) return true;
+  } while (!out.is_stream_command());
   const auto& checks = key_checks();
   std::uint32_t present = 0;
   for (const toolpath::Parameter& p : out.parameters) {

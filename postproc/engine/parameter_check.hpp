@@ -30,8 +30,12 @@ std::string kind_mismatch(ParameterKind kind, const toolpath::Value& value);
 class ParameterCheck final : public toolpath::CommandSource {
 public:
   using Warn = std::function<void(const toolpath::SourcePosition& where, const std::string& message)>;
+  // Commands deeper than the stream (Command::is_stream_command: calls the original post made
+  // itself) are passed on unchecked, as written, or with Deeper::Leave left out (the engine posts
+  // the stream only, and leaves them out here rather than in a layer of its own).
+  enum class Deeper : std::uint8_t { Pass, Leave };
   // `file_name` names the input in errors; `inner` must outlive the check.
-  ParameterCheck(toolpath::CommandSource& inner, std::string file_name, Warn warn = {});
+  ParameterCheck(toolpath::CommandSource& inner, std::string file_name, Warn warn = {}, Deeper deeper = Deeper::Pass);
   bool next(toolpath::Command& out) override;
 
 private:
@@ -58,6 +62,7 @@ private:
   std::uint32_t given_ = 0;   // the required parameters some command has carried (bits of Need)
   std::uint64_t warned_ = 0;  // (command, parameter) pairs already warned about
   bool read_back_ = false;    // the stream is G-code read back by a controller model
+  bool leave_deeper_ = false;
 };
 
 }  // namespace postproc

@@ -59,6 +59,40 @@ TEST(PrefetchSource, SameCommandsInOrder) {
   }
 }
 
+// A first command taken from the source before: it comes first, then the rest, in any batch size,
+// by next() and by next_in_place(); the source's exception still comes where it happened.
+TEST(PrefetchSource, StartsWithACommandTakenBefore) {
+  const Shape shapes[] = {{1, 4, 2}, {2, 4, 2}, {4, 4, 2}, {5, 4, 2}, {1000, 1, 2}, {1000, 3, 3}, {10000, 256, 4}};
+  for (const Shape& s : shapes) {
+    for (const bool in_place : {false, true}) {
+      SCOPED_TRACE(std::to_string(s.commands) + " commands, batches of " + std::to_string(s.batch_size) +
+                   (in_place ? ", in place" : ""));
+      Numbered source(s.commands);
+      Command first;
+      ASSERT_TRUE(source.next(first));
+      PrefetchSource prefetched(source, std::move(first), s.batch_size, s.batches);
+      std::size_t n = 0;
+      Command c;
+      for (;;) {
+        const Command* got = in_place ? prefetched.next_in_place() : (prefetched.next(c) ? &c : nullptr);
+        if (!got) break;
+        expect_numbered(*got, n++);
+      }
+      EXPECT_EQ(n, s.commands);
+    }
+  }
+  Numbered failing(10, 5);
+  Command first;
+  ASSERT_TRUE(failing.next(first));
+  PrefetchSource prefetched(failing, std::move(first), 2, 2);
+  Command c;
+  for (std::size_t i = 0; i < 5; ++i) {
+    ASSERT_TRUE(prefetched.next(c));
+    expect_numbered(c, i);
+  }
+  EXPECT_THROW(prefetched.next(c), std::runtime_error);
+}
+
 // Reads like next(), and checks after each call that the `kept` commands before are still intact:
 // small batches in a small ring have the worker refill every slot it may as soon as it may.
 TEST(PrefetchSource, InPlaceKeepsTheCommandsBefore) {

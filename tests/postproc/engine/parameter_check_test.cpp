@@ -67,6 +67,32 @@ std::string read_error(const std::string& trace, std::string* warnings = nullptr
   return test_support::read_error(check);
 }
 
+// Deeper commands (the original post's own calls) pass unchecked as written, or are left out with
+// Deeper::Leave, which gives exactly the stream commands.
+TEST(ParameterCheck, DeeperCommandsPassOrAreLeftOut) {
+  const std::string trace =
+      "(1)@start_of_file   ==> program_number:1\n"
+      "(2)@inner           ==> xpos:'not a number'\n"
+      "(0)@line            ==> xpos:1 ypos:2 zpos:3 feed:100\n"
+      "(3)@inner           ==> a:1\n"
+      "(2)@inner           ==> a:2\n"
+      "(1)@line            ==> xpos:4 ypos:5 zpos:6 feed:100\n"
+      "(2)@inner           ==> a:3\n";
+  for (const auto deeper : {postproc::ParameterCheck::Deeper::Pass, postproc::ParameterCheck::Deeper::Leave}) {
+    std::istringstream in(trace);
+    toolpath::TraceReader reader(in, "job.trace");
+    postproc::ParameterCheck check(reader, "job.trace", {}, deeper);
+    std::vector<std::string> seen;
+    toolpath::Command c;
+    while (check.next(c)) seen.push_back(std::to_string(c.depth) + c.name + "#" + std::to_string(c.index));
+    if (deeper == postproc::ParameterCheck::Deeper::Pass)
+      EXPECT_EQ(seen, (std::vector<std::string>{"1@start_of_file#0", "2@inner#1", "0@line#2", "3@inner#3", "2@inner#4",
+                                                "1@line#5", "2@inner#6"}));
+    else
+      EXPECT_EQ(seen, (std::vector<std::string>{"1@start_of_file#0", "0@line#2", "1@line#5"}));
+  }
+}
+
 TEST(ParameterCheck, ReadErrorsNameTheValue) {
   struct Case {
     const char* trace;

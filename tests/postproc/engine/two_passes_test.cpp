@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "postproc/engine/engine.hpp"
+#include "postproc/engine/parameter_check.hpp"
 #include "prp/prp.hpp"
 #include "toolpath/trace_reader.hpp"
 
@@ -202,8 +203,9 @@ TEST_F(TwoPasses, ShippedPostsOnTheExampleJobs) {
       std::istringstream in(job);
       toolpath::TraceReader skim(in, path);
       skim.skim_job_motions();
-      toolpath::StreamCommands stream(skim);  // as the engine hands the skim to the forecast
-      if (prp::forecast_jobs(params, stream)) ++forecast;
+      // As the engine hands the skim to the forecast (a value the check refuses means no forecast).
+      postproc::ParameterCheck checked(skim, path, {}, postproc::ParameterCheck::Deeper::Leave);
+      if (prp::forecast_jobs(params, checked)) ++forecast;
     }
   }
   EXPECT_GE(posted, 40);    // of 50 (41 when written): some jobs need a machine the post is not for
