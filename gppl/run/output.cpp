@@ -53,7 +53,8 @@ void Interpreter::State::flush() {
   separator_pending = false;
   if (!is_directive(line)) {
     if (globals[program.slots.remove_blanks].value.logical) line.remove_all(' ');
-    line.append(globals[program.slots.end_block_text].value.text);
+    const std::string& end_text = globals[program.slots.end_block_text].value.text;
+    if (!end_text.empty()) line.append(end_text);  // usually there is none
   }
   sink.write_line(line, origin);
   if (trace != nullptr) trace_output(line);
