@@ -279,10 +279,10 @@ char* put_whole(char* p, std::uint64_t whole) {
   const int kept = 3 - (t[3] & 3);
   char* p = put_affix(out, f.prefix, f.prefix_length);
   *p = '-';
-  p += x < 0 && units != 0 ? 1 : 0;  // a value that rounds to zero has no sign
+  p += (units != 0) & std::signbit(x);  // a value that rounds to zero has no sign (nor has -0)
   p = put_whole(p, whole);
   *p = '.';
-  p += kept != 0 || !f.conditional_point ? 1 : 0;
+  p += (kept | !f.conditional_point) != 0;  // a point unless option p drops it with a zero fraction
   std::memcpy(p, t, 4);
   return put_affix(p + kept, f.postfix, f.postfix_length);
 }
