@@ -62,10 +62,10 @@ constexpr double decision_margin = 6e-15;                    // see the proof at
 bool fast::round_to_units(double magnitude, int n, std::uint64_t& units) {
   const double s = magnitude * double_powers_of_ten[n];
   if (!(s < exact_fraction_limit)) return false;
-  const auto whole = static_cast<std::uint64_t>(s);
+  const auto whole = static_cast<std::int64_t>(s);  // signed: 0 <= s < 2^52, and the conversion is one instruction
   const double from_half = (s - static_cast<double>(whole)) - 0.5;
   if (std::fabs(from_half) <= s * decision_margin) return false;
-  units = whole + (from_half > 0 ? 1 : 0);
+  units = static_cast<std::uint64_t>(whole) + (from_half > 0 ? 1 : 0);
   return true;
 }
 
@@ -87,6 +87,18 @@ constexpr auto digit_triples = [] {
 }();
 
 const char* triple(std::uint64_t v) { return digit_triples.data() + 4 * v; }
+
+// "0".."999" without leading zeros, left-aligned in four bytes whose last holds the digit count:
+// a number below 1000 is one four-byte copy and one add (the bytes past its digits are scratch).
+constexpr auto short_numbers = [] {
+  std::array<char, 4000> t{};
+  for (int i = 0; i < 1000; ++i) {
+    const int len = i >= 100 ? 3 : i >= 10 ? 2 : 1;
+    for (int d = 0, v = i; d < len; ++d, v /= 10) t[static_cast<std::size_t>(4 * i + len - 1 - d)] = static_cast<char>('0' + v % 10);
+    t[static_cast<std::size_t>(4 * i + 3)] = static_cast<char>(len);
+  }
+  return t;
+}();
 
 // Writes the integer digits of v so that they end at `end` (none for 0); returns where they
 // start. Up to two zeros before the start are scratch.
@@ -212,11 +224,71 @@ char* format_number(char* p, const DisplayFormat& f, const Value& v, bool& handl
   return handled ? write_units(p, f, units, negative) : p;
 }
 
-}  // namespace
+// The quick shapes (DisplayFormat::quick): [-]digits[.fraction] for an integer part below 10^6.
+// A few table copies and no registers to save, so it pays its way on the commonest numbers
+// (coordinates, feeds, G codes, block numbers); anything else falls back to the general path.
+constexpr std::uint64_t quick_whole_limit = 1'000'000;
 
-static_assert(formatted_room == DisplayFormat::max_affix + exact::max_number + DisplayFormat::max_affix);
+// Affixes: nothing for an empty one, else a fixed-size copy (the length decides what counts).
+char* put_affix(char* p, const std::array<char, DisplayFormat::max_affix>& text, int length) {
+  if (length != 0) std::memcpy(p, text.data(), DisplayFormat::max_affix);
+  return p + length;
+}
 
-char* write_formatted(char* out, const DisplayFormat& f, const Value& v) {
+// A number below 1000 from short_numbers.
+char* put_short(char* p, std::uint64_t v) {
+  const char* t = short_numbers.data() + 4 * v;
+  std::memcpy(p, t, 4);
+  return p + t[3];
+}
+
+// The digits of `whole` (< quick_whole_limit) without leading zeros, a single 0 for zero.
+char* put_whole(char* p, std::uint64_t whole) {
+  if (whole < 1000) return put_short(p, whole);
+  const std::uint64_t high = whole / 1000;
+  p = put_short(p, high);
+  std::memcpy(p, triple(whole - high * 1000), 4);  // the low three digits with their zeros
+  return p + 3;
+}
+
+// An integer under a quick format: its digits, then a point unless option p drops it (the
+// fraction is zero). nullptr when the general path must print it. Inlined into both
+// write_formatted(): a call would make them save registers.
+[[gnu::always_inline]] inline char* quick_integer(char* out, const DisplayFormat& f, std::int64_t i) {
+  const std::uint64_t magnitude = i < 0 ? 0 - static_cast<std::uint64_t>(i) : static_cast<std::uint64_t>(i);
+  if (!f.quick || magnitude >= quick_whole_limit) return nullptr;
+  char* p = put_affix(out, f.prefix, f.prefix_length);
+  *p = '-';
+  p += i < 0 ? 1 : 0;
+  p = put_whole(p, magnitude);
+  *p = '.';
+  p += f.conditional_point ? 0 : 1;
+  return put_affix(p, f.postfix, f.postfix_length);
+}
+
+// A numeric value under a quick format, rounded by round_to_units: the fraction's N <= 3 digits
+// are one table entry (scaled to three digits, the extra ones zeros), trailing zeros dropped.
+[[gnu::always_inline]] inline char* quick_numeric(char* out, const DisplayFormat& f, double x) {
+  const int n = f.frac_digits;
+  std::uint64_t units = 0;
+  if (!f.quick || !fast::round_to_units(std::fabs(x), n, units)) return nullptr;
+  const std::uint64_t whole = units / powers_of_ten[n];
+  if (whole >= quick_whole_limit) return nullptr;
+  static constexpr std::uint64_t widen[] = {1000, 100, 10, 1};
+  const char* t = triple((units - whole * powers_of_ten[n]) * widen[n]);
+  const int kept = 3 - (t[3] & 3);
+  char* p = put_affix(out, f.prefix, f.prefix_length);
+  *p = '-';
+  p += (units != 0) & std::signbit(x);  // a value that rounds to zero has no sign (nor has -0)
+  p = put_whole(p, whole);
+  *p = '.';
+  p += (kept | !f.conditional_point) != 0;  // a point unless option p drops it with a zero fraction
+  std::memcpy(p, t, 4);
+  return put_affix(p + kept, f.postfix, f.postfix_length);
+}
+
+// Everything else. Kept out of line so that the quick path saves no registers.
+[[gnu::noinline]] char* write_general(char* out, const DisplayFormat& f, const Value& v) {
   // Affixes are copied whole (a fixed-size copy is a few moves; the length decides what counts).
   std::memcpy(out, f.prefix.data(), DisplayFormat::max_affix);
   char* p = out + f.prefix_length;
@@ -226,6 +298,32 @@ char* write_formatted(char* out, const DisplayFormat& f, const Value& v) {
   if (p == nullptr) return out;  // option d: not even the affixes
   std::memcpy(p, f.postfix.data(), DisplayFormat::max_affix);
   return p + f.postfix_length;
+}
+
+[[gnu::noinline]] char* write_general_integer(char* out, const DisplayFormat& f, std::int64_t value) {
+  return write_general(out, f, Value::of_integer(value));
+}
+
+}  // namespace
+
+static_assert(formatted_room == DisplayFormat::max_affix + exact::max_number + DisplayFormat::max_affix);
+
+char* fast::write_quick(char* out, const DisplayFormat& f, const Value& v) {
+  if (v.type == Type::Numeric) return quick_numeric(out, f, v.numeric);
+  if (v.type == Type::Integer) return quick_integer(out, f, v.integer);
+  return nullptr;
+}
+
+char* write_formatted(char* out, const DisplayFormat& f, const Value& v) {
+  char* end = nullptr;
+  if (v.type == Type::Numeric) end = quick_numeric(out, f, v.numeric);
+  else if (v.type == Type::Integer) end = quick_integer(out, f, v.integer);
+  return end != nullptr ? end : write_general(out, f, v);
+}
+
+char* write_formatted(char* out, const DisplayFormat& f, std::int64_t value) {
+  if (char* end = quick_integer(out, f, value)) return end;
+  return write_general_integer(out, f, value);
 }
 
 void append_formatted(std::string& out, const DisplayFormat& f, const Value& v) {

@@ -49,6 +49,9 @@ struct DisplayFormat {
   // trailing zeros stripped to nothing, a point unless option p drops it ('5.3', '<X>5.3(p)').
   // The printer lays these out on a short path.
   bool plain = false;
+  // Also derived: plain, no scales, no inversion and N <= 3 ('5.3', '5.0(p)', '<X>2.0(p)'), the
+  // shapes that print numbers with a few table lookups and no general layout.
+  bool quick = false;
 
   std::string_view prefix_text() const { return {prefix.data(), prefix_length}; }
   std::string_view postfix_text() const { return {postfix.data(), postfix_length}; }
@@ -74,6 +77,8 @@ inline constexpr std::size_t formatted_room = 2 * DisplayFormat::max_affix + 2 *
 // which has formatted_room bytes of room; returns the end of the text (`out` itself when option d
 // suppresses the item). The interpreter writes into its output line this way without a copy.
 char* write_formatted(char* out, const DisplayFormat& f, const Value& v);
+// The same for an integer value without building a Value (block numbers).
+char* write_formatted(char* out, const DisplayFormat& f, std::int64_t value);
 
 // Convenience for tests and tostr(): the formatted text as a new string.
 std::string format_value(const DisplayFormat& f, const Value& v);

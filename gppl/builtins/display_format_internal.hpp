@@ -51,4 +51,8 @@ constexpr int max_fraction = 15;  // larger N always take the exact path
 // when one multiplication decides it; false when the exact printer must decide.
 bool round_to_units(double magnitude, int n, std::uint64_t& units);
 
+// write_formatted() for a quick format (DisplayFormat::quick) and an integer or numeric value
+// whose integer part is below 10^6; nullptr when it is not such a case (the general path prints it).
+char* write_quick(char* out, const DisplayFormat& f, const Value& v);
+
 }  // namespace gppl::fast

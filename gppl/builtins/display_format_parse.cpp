@@ -50,6 +50,7 @@ public:
     f_.plain = f_.lead == DisplayFormat::Pad::None && f_.sign == DisplayFormat::Sign::NegativeOnly &&
                f_.min_int_digits == 1 && f_.min_frac_digits == 0 && f_.trail == DisplayFormat::Pad::None &&
                !f_.no_point && !f_.delete_if_zero;
+    f_.quick = f_.plain && f_.scale_count == 0 && !f_.invert && f_.frac_digits <= 3;
     return f_;
   }
 

@@ -63,7 +63,8 @@ void Interpreter::State::flush() {
   separator_pending = false;
   if (!is_directive(line)) {
     if (globals[program.slots.remove_blanks].value.logical) line.remove_all(' ');
-    line.append(globals[program.slots.end_block_text].value.text);
+    const std::string& end_text = globals[program.slots.end_block_text].value.text;
+    if (!end_text.empty()) line.append(end_text);  // usually there is none
   }
   sink.write_line(line, origin);
   if (trace != nullptr) trace_output(line);
@@ -88,22 +89,19 @@ void Interpreter::State::new_block(SourcePos pos) {
   const std::string& spec = globals[program.slots.blknum_f].value.text;
   const DisplayFormat& f = cached(format_sites[program.format_sites + 2],
                                   spec.empty() ? std::string_view(globals[program.slots.integer_def_f].value.text) : spec, pos);
-  Value& v = push_scratch();
-  v.type = Type::Integer;
-  v.integer = n;
-  v.numeric = 0.0;
-  v.logical = false;
-  v.text.clear();
   try {
-    line.commit(write_formatted(line.room(formatted_room), f, v));
+    line.commit(write_formatted(line.room(formatted_room), f, n));
   } catch (const Error& e) {
-    pop_scratch();
     throw Error(e.number(), program.position(pos), e.text());
   }
   if (program.uses_line_functions) sink.block_numbered(n);
-  v.integer = n + globals[program.slots.blknum_delta].value.integer;
-  assign(number, v, ChangeOverride::Compute, nullptr);
-  pop_scratch();
+  const std::int64_t next = n + globals[program.slots.blknum_delta].value.integer;
+  if (number.typed && number.value.type == Type::Integer) {  // assign() without a Value to carry it
+    number.value.integer = next;
+    mark_assigned(number, next != n, ChangeOverride::Compute);
+  } else {
+    assign(number, Value::of_integer(next), ChangeOverride::Compute, nullptr);
+  }
   separator_pending = true;
 }
 

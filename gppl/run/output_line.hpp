@@ -14,25 +14,31 @@
 
 namespace gppl {
 
+// The end and the limit are kept as pointers: room(), commit() and the appends, a dozen a block,
+// then need no base-plus-offset arithmetic.
 class OutputLine {
 public:
   OutputLine() { grow(256); }
+  OutputLine(const OutputLine&) = delete;  // the pointers point into its own buffer
+  OutputLine& operator=(const OutputLine&) = delete;
 
-  std::size_t size() const { return size_; }
-  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return static_cast<std::size_t>(end_ - data_.get()); }
+  bool empty() const { return end_ == data_.get(); }
   char operator[](std::size_t i) const { return data_[i]; }
-  std::string_view view() const { return {data_.get(), size_}; }
+  std::string_view view() const { return {data_.get(), size()}; }
   operator std::string_view() const { return view(); }
 
-  void clear() { size_ = 0; }
-  void shrink(std::size_t n) { size_ = std::min(size_, n); }
+  void clear() { end_ = data_.get(); }
+  void shrink(std::size_t n) {
+    if (n < size()) end_ = data_.get() + n;
+  }
 
   // At least `n` writable bytes at the end; nothing counts until commit().
   char* room(std::size_t n) {
-    if (capacity_ - size_ < n) grow(size_ + n);
-    return data_.get() + size_;
+    if (static_cast<std::size_t>(limit_ - end_) < n) grow(size() + n);
+    return end_;
   }
-  void commit(const char* end) { size_ = static_cast<std::size_t>(end - data_.get()); }
+  void commit(const char* end) { end_ += end - end_; }  // `end` lies in the room just given
 
   void append(std::string_view text) {
     const std::size_t n = text.size();
@@ -47,39 +53,52 @@ public:
       std::memcpy(to, &head, sizeof(Word));
       std::memcpy(to + n - sizeof(Word), &tail, sizeof(Word));
     };
-    if (n >= 16) std::memcpy(to, from, n);
-    else if (n >= 8) copy(std::uint64_t{});
-    else if (n >= 4) copy(std::uint32_t{});
-    else if (n > 0) to[0] = from[0], to[n / 2] = from[n / 2], to[n - 1] = from[n - 1];  // 1 to 3 bytes: all of them
-    size_ += n;
+    // The shortest first: they are the most frequent, and an empty text (end_block_text) costs two tests.
+    if (n <= 3) {
+      if (n > 0) to[0] = from[0], to[n / 2] = from[n / 2], to[n - 1] = from[n - 1];  // all of them
+    } else if (n < 8) {
+      copy(std::uint32_t{});
+    } else if (n <= 16) {
+      copy(std::uint64_t{});
+    } else {
+      std::memcpy(to, from, n);
+    }
+    end_ = to + n;
   }
-  void push_back(char c) { *room(1) = c, ++size_; }
+  void push_back(char c) {
+    char* to = room(1);
+    *to = c;
+    end_ = to + 1;
+  }
   void append_fill(std::size_t n, char c) {
     if (n == 0) return;
-    std::memset(room(n), c, n);
-    size_ += n;
+    char* to = room(n);
+    std::memset(to, c, n);
+    end_ = to + n;
   }
   void insert(std::size_t at, char c) {
-    char* base = room(1);  // may move the text: take the base after growing
-    base -= size_;
-    std::memmove(base + at + 1, base + at, size_ - at);
-    base[at] = c;
-    ++size_;
+    room(1);  // may move the text: take the position after growing
+    char* p = data_.get() + at;
+    std::memmove(p + 1, p, static_cast<std::size_t>(end_ - p));
+    *p = c;
+    ++end_;
   }
-  void remove_all(char c) { size_ = static_cast<std::size_t>(std::remove(data_.get(), data_.get() + size_, c) - data_.get()); }
+  void remove_all(char c) { end_ = std::remove(data_.get(), end_, c); }
 
 private:
   void grow(std::size_t wanted) {
-    const std::size_t capacity = std::max(wanted, 2 * capacity_);
+    const auto size = static_cast<std::size_t>(end_ - data_.get());
+    const std::size_t capacity = std::max(wanted, 2 * static_cast<std::size_t>(limit_ - data_.get()));
     auto bigger = std::make_unique_for_overwrite<char[]>(capacity);
-    if (size_ > 0) std::memcpy(bigger.get(), data_.get(), size_);
+    if (size > 0) std::memcpy(bigger.get(), data_.get(), size);
     data_ = std::move(bigger);
-    capacity_ = capacity;
+    end_ = data_.get() + size;
+    limit_ = data_.get() + capacity;
   }
 
   std::unique_ptr<char[]> data_;
-  std::size_t size_ = 0;
-  std::size_t capacity_ = 0;
+  char* end_ = nullptr;    // of the text
+  char* limit_ = nullptr;  // of the buffer
 };
 
 }  // namespace gppl

@@ -7,15 +7,26 @@
 
 namespace postproc {
 
-void EngineSink::write_line(std::string_view line, const gppl::LineOrigin& origin) {
-  std::size_t first = 0;  // a directive may be indented (find_first_not_of costs a memchr per character)
+namespace {
+
+// A directive may be indented (blanks or tabs before its '!'). A line that starts with any other
+// printable character, as NC blocks do, is settled by its first byte.
+bool maybe_directive(std::string_view line) {
+  if (!line.empty() && static_cast<unsigned char>(line[0]) > '!') return false;
+  std::size_t first = 0;  // a loop: find_first_not_of costs a memchr per character
   while (first < line.size() && (line[first] == ' ' || line[first] == '\t')) ++first;
-  const bool maybe_directive = first < line.size() && line[first] == '!';
-  if (!maybe_directive && !observer_) {  // the usual line: straight to the file
-    write_to_file(line, origin.after_break);
+  return first < line.size() && line[first] == '!';
+}
+
+}  // namespace
+
+void EngineSink::write_line(std::string_view line, const gppl::LineOrigin& origin) {
+  const bool directive = maybe_directive(line);
+  if (!directive && !observer_) {  // the usual line: straight to the file
+    lines += files_.write_line(line, origin.after_break);
     return;
   }
-  write_observed(line, origin, maybe_directive);
+  write_observed(line, origin, directive);
 }
 
 std::string_view EngineSink::include_name(std::string_view file) {
@@ -26,12 +37,6 @@ std::string_view EngineSink::include_name(std::string_view file) {
   std::string name = included.lexically_relative(folder.empty() ? "." : folder).generic_string();
   if (name.empty()) name = included.generic_string();  // another root: the path as it was opened
   return include_names_.emplace_back(std::string(file), std::move(name)).second;
-}
-
-// The count includes the empty first line the break before a file's first block makes.
-void EngineSink::write_to_file(std::string_view line, bool after_break) {
-  lines += files_.break_starts_file(after_break) ? 2 : 1;
-  files_.write_line(line, after_break);
 }
 
 void EngineSink::write_observed(std::string_view line, const gppl::LineOrigin& origin, bool maybe_directive) {
@@ -72,7 +77,7 @@ void EngineSink::write_observed(std::string_view line, const gppl::LineOrigin& o
       files_.execute(*directive, {}, origin.after_break);
     }
   } else {
-    write_to_file(line, origin.after_break);
+    lines += files_.write_line(line, origin.after_break);
   }
 }
 

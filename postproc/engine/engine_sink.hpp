@@ -55,11 +55,10 @@ public:
   std::size_t command_index = 0;
   std::string_view command_name;
   std::uint32_t command_line = 0;  // of the command's header in the input (0: not read from a file)
-  std::size_t lines = 0;
+  std::size_t lines = 0;  // written, with the empty first line the break before a file's first block makes
 
 private:
   void write_observed(std::string_view line, const gppl::LineOrigin& origin, bool maybe_directive);
-  void write_to_file(std::string_view line, bool after_break);
   // LineOrigin::include_file of a line written by a statement of `file`; empty for the post itself.
   std::string_view include_name(std::string_view file);
 

@@ -38,6 +38,30 @@ void split_lines(std::string_view chunk, std::string& partial, const OutputFiles
   }
 }
 
+// A line's bytes without a library call (which costs more than copying a 20-byte NC block): word
+// copies, the last one overlapping the one before. No byte outside the line is read.
+void copy_line(char* to, std::string_view line) {
+  const char* from = line.data();
+  const std::size_t n = line.size();
+  auto copy = [&]<std::size_t Word>(std::size_t at) {
+    char word[Word];
+    std::memcpy(word, from + at, Word);
+    std::memcpy(to + at, word, Word);
+  };
+  if (n >= 16) {
+    for (std::size_t at = 0; at + 16 < n; at += 16) copy.template operator()<16>(at);
+    copy.template operator()<16>(n - 16);
+  } else if (n >= 8) {
+    copy.template operator()<8>(0);
+    copy.template operator()<8>(n - 8);
+  } else if (n >= 4) {
+    copy.template operator()<4>(0);
+    copy.template operator()<4>(n - 4);
+  } else if (n > 0) {
+    to[0] = from[0], to[n / 2] = from[n / 2], to[n - 1] = from[n - 1];  // 1 to 3 bytes: all of them
+  }
+}
+
 [[noreturn]] void io_failure(const std::string& what, const fs::path& path) {
   throw std::runtime_error("cannot " + what + " `" + path.string() + "`: " + std::strerror(errno));
 }
@@ -137,19 +161,34 @@ void OutputFiles::switch_to(std::size_t index) {
   open_handle(entries_[current_], "ab");
 }
 
-void OutputFiles::write_line(std::string_view line, bool after_break) {
-  const std::size_t eol = after_break && !break_taken_ ? (line_end_ == LineEnd::CRLF ? 2 : 1) : 0;
-  break_taken_ = false;
+[[gnu::noinline]] std::size_t OutputFiles::write_slowly(std::string_view line, std::size_t eol, std::size_t lines) {
   if (unwritten_slots_ > 0 && line.find('\x02') != std::string_view::npos) {
     append(std::string_view("\r\n").substr(2 - eol));  // placeholders are found by offset: the break first
     append(place_slots(line, slot_line_));
-    return;
+    return lines;
   }
-  // The usual line: its break and its text in one copy.
   char* out = room(eol + line.size());
   if (eol == 2) *out++ = '\r';
   if (eol > 0) *out++ = '\n';
   if (!line.empty()) std::memcpy(out, line.data(), line.size());
+  return lines;
+}
+
+std::size_t OutputFiles::write_line(std::string_view line, bool after_break) {
+  const std::size_t eol = after_break && !break_taken_ ? (line_end_ == LineEnd::CRLF ? 2 : 1) : 0;
+  const std::size_t lines = eol > 0 && entries_[current_].size == 0 ? 2 : 1;
+  break_taken_ = false;
+  const std::size_t n = eol + line.size();
+  // Placeholders, or a buffer to drain first: out of line, so that the usual line calls nothing.
+  if (unwritten_slots_ > 0 || buffer_.size() - buffered_ < n) return write_slowly(line, eol, lines);
+  // The usual line: its break and its text in one copy.
+  entries_[current_].size += n;
+  char* out = buffer_.data() + buffered_;
+  buffered_ += n;
+  if (eol == 2) *out++ = '\r';
+  if (eol > 0) *out++ = '\n';
+  copy_line(out, line);
+  return lines;
 }
 
 void OutputFiles::append(std::string_view bytes) {

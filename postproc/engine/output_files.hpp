@@ -37,7 +37,8 @@ public:
   // it (`nl` and `nb` start a line): with `after_break` the break goes first, unless the directive
   // just executed took it (the break that ends a `!! ... !!` line goes with it). So a file begins
   // with an empty line and ends without a final break, as SolidCAM's do (docs/engine.md, "Line breaks").
-  void write_line(std::string_view line, bool after_break = true);
+  // Returns the lines the file gained: 2 when the break began it (break_starts_file), else 1.
+  std::size_t write_line(std::string_view line, bool after_break = true);
   // True when write_line(…, after_break) would begin the current file with an empty line.
   bool break_starts_file(bool after_break) const {
     return after_break && !break_taken_ && entries_[current_].size == 0;
@@ -97,6 +98,7 @@ private:
   void close_handle(Entry& e);
   void switch_to(std::size_t index);
   void run(const Directive& directive, const LineCallback& copied_line);
+  std::size_t write_slowly(std::string_view line, std::size_t eol, std::size_t lines);  // write_line's rare cases
   void append(std::string_view bytes);  // to the current file, through the buffer
   char* room(std::size_t n);            // n bytes of the buffer for the current file, counted in its size
   void drain();  // the buffered lines into the current file's stream

@@ -196,4 +196,93 @@ TEST(FastPrinter, MatchesTheExactPrinterForEveryShape) {
   }
 }
 
+
+// The quick path (DisplayFormat::quick) on its own: every value it takes must print exactly as
+// the reference does, and it must take the values it is there for (short decimals, integers
+// below 10^6 under the shipped posts' formats).
+std::vector<Value> quick_candidates() {
+  std::vector<Value> values;
+  for (std::int64_t i = -2000; i <= 2000; ++i) values.push_back(Value::of_integer(i));
+  for (std::int64_t edge : {std::int64_t{999}, std::int64_t{1000}, std::int64_t{1001}, std::int64_t{9999},
+                            std::int64_t{10000}, std::int64_t{99999}, std::int64_t{100000}, std::int64_t{999999},
+                            std::int64_t{1000000}, std::int64_t{1000001}, INT64_MAX}) {
+    values.push_back(Value::of_integer(edge));
+    values.push_back(Value::of_integer(-edge));
+  }
+  values.push_back(Value::of_integer(INT64_MIN));
+  std::mt19937_64 rng(14);
+  for (int i = 0; i < 20000; ++i) values.push_back(Value::of_integer(static_cast<std::int64_t>(rng() % 2'400'000) - 1'200'000));
+  // Decimals as a CAM system writes them (up to four places, so that N = 3 rounds some), their
+  // halves and neighbours, and the values that round up to the next thousand or million.
+  for (int i = 0; i < 40000; ++i) {
+    const std::int64_t digits = static_cast<std::int64_t>(rng() % 20'000'000'000) - 10'000'000'000;
+    const double x = decimal(std::to_string(digits) + "e-4");
+    values.push_back(Value::of_numeric(x));
+    values.push_back(Value::of_numeric(std::nextafter(x, 0.0)));
+  }
+  for (double m : {0.0, 0.0005, 0.05, 0.5, 0.4999999999, 999.9995, 999.9994, 999999.9995, 999999.9994, 999999.4,
+                   999999.5, 1e6, 99999.99951, 1.0005, 2.675, 1234.5675, 0.001, 0.0004999}) {
+    for (double x : {m, -m, std::nextafter(m, 0.0), std::nextafter(m, 1e9)}) {
+      values.push_back(Value::of_numeric(x));
+      values.push_back(Value::of_numeric(-x));
+    }
+  }
+  values.push_back(Value::of_numeric(-0.0));
+  values.push_back(Value::of_numeric(std::numeric_limits<double>::quiet_NaN()));
+  values.push_back(Value::of_numeric(std::numeric_limits<double>::infinity()));
+  values.push_back(Value::of_logical(true));
+  return values;
+}
+
+TEST(QuickPrinter, MatchesTheExactPrinterWhereverItAnswers) {
+  const std::vector<Value> values = quick_candidates();
+  long quick_formats = 0;
+  for (const std::string& shape : format_shapes()) {
+    const gppl::DisplayFormat f = gppl::parse_display_format(shape);
+    if (!f.quick) continue;
+    ++quick_formats;
+    long answered = 0;
+    for (const Value& v : values) {
+      char buf[gppl::formatted_room];
+      const char* end = gppl::fast::write_quick(buf, f, v);
+      if (end == nullptr) continue;
+      ++answered;
+      std::string expected;
+      gppl::exact::format_reference(expected, f, v);
+      ASSERT_EQ(std::string(buf, static_cast<std::size_t>(end - buf)), expected) << "format '" << shape << "', value " << describe(v);
+    }
+    // Halves at the last place (a tenth of the four-place decimals under N = 3) go to the exact path.
+    EXPECT_GT(answered, static_cast<long>(values.size()) * 8 / 10) << "format '" << shape << "'";
+  }
+  EXPECT_GE(quick_formats, 10);
+}
+
+TEST(QuickPrinter, TakesOnlyThePlainShapesWithoutScalesAndAtMostThreeDecimals) {
+  for (const char* shape : {"5.3", "5.0(p)", "2.0(p)", "5.1(p)", "<X>5.3<;>", "<X> 5.3(p)", "4.3(p)", "5.2", "5/1.3"})
+    EXPECT_TRUE(gppl::parse_display_format(shape).quick) << shape;
+  for (const char* shape : {"5.4", "5.3(i)", "5.3(*2)", "5.3/1", "+5.3", " 5.3z", "z5.3", "5.3(n)", "5.3(d)", "5/0.3", "2/2.0(p)"})
+    EXPECT_FALSE(gppl::parse_display_format(shape).quick) << shape;
+}
+
+// write_formatted() for a bare integer (block numbers) against the Value overload's reference,
+// through the quick path and the general one.
+TEST(QuickPrinter, TheIntegerOverloadMatchesTheReference) {
+  std::vector<std::int64_t> integers;
+  for (const Value& v : quick_candidates())
+    if (v.type == gppl::Type::Integer) integers.push_back(v.integer);
+  for (const std::string& shape : format_shapes()) {
+    const gppl::DisplayFormat f = gppl::parse_display_format(shape);
+    for (std::int64_t i : integers) {
+      const Value v = Value::of_integer(i);
+      const std::string expected = printed(gppl::exact::format_reference, f, v);
+      const std::string actual = printed([i](std::string& out, const gppl::DisplayFormat& fmt, const Value&) {
+        char buf[gppl::formatted_room];
+        const char* end = gppl::write_formatted(buf, fmt, i);
+        out.append(buf, static_cast<std::size_t>(end - buf));
+      }, f, v);
+      ASSERT_EQ(actual, expected) << "format '" << shape << "', value " << i;
+    }
+  }
+}
+
 }  // namespace

@@ -2,6 +2,10 @@
 // (6.4), block-number rules (6.3), directives (6.7) and clear_change_after_gen (behaviour 2a).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include "support.hpp"
 
 using namespace gppl_test;
@@ -323,6 +327,29 @@ TEST(Generate, LineOrigins) {
   post.run->finish();
   EXPECT_EQ(post.out.lines, (std::vector<std::string>{"A", "B C"}));
   EXPECT_EQ(post.out.procedures, (std::vector<std::string>{"@a", "@b"}));
+}
+
+// nb numbers the block and steps blknum without going through a Value: blknum's value and change
+// flag must end up as the assignment `blknum = blknum + blknum_delta` leaves them, whether blknum
+// was assigned before or not, its flag set or cleared, the step zero or not, and on a second nb.
+TEST(Generate, BlockNumberStepMatchesAnAssignment) {
+  const std::string report = "{nl, (change(blknum)):'1.0(p)', ' ', blknum}";
+  for (const char* delta : {"0", "10", "-3"}) {
+    for (const char* before : {"", "blknum = 10\n", "blknum = 10\nchange(blknum) = FALSE\n", "change(blknum) = TRUE\n"}) {
+      const std::string setup = std::string("blknum_gen = TRUE\nblknum_delta = ") + delta + "\n" + before;
+      const std::string step = "blknum = blknum + blknum_delta\n";
+      const std::string by_nb = generate(setup + "{nb}\n" + report + "\n{nb}\n" + report);
+      const std::string by_assignment = generate(setup + step + report + "\n" + step + report);
+      // by_nb has the two numbered blocks in front of each report line.
+      std::vector<std::string> lines;
+      for (std::size_t at = 0, end; at <= by_nb.size(); at = end + 1) {
+        end = std::min(by_nb.find('\n', at), by_nb.size());
+        lines.push_back(by_nb.substr(at, end - at));
+      }
+      ASSERT_EQ(lines.size(), 4u) << by_nb;
+      EXPECT_EQ(lines[1] + "\n" + lines[3], by_assignment) << "delta " << delta << ", before: " << before;
+    }
+  }
 }
 
 }  // namespace

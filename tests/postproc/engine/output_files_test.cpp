@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -225,6 +226,31 @@ TEST_F(OutputFilesTest, BufferedLinesKeepTheirOrderAcrossFilesAndCopies) {
   out.commit();
   EXPECT_EQ(slurp(dir / "MAIN.TAP"), main_expected);
   EXPECT_EQ(slurp(dir / "SUB.SPF"), sub_expected);
+}
+
+// Lines of every length up to 40 (each copy path and its edges) with random bytes, with and
+// without the break before them, LF and CR LF: the file holds exactly them, and write_line() counts
+// what break_starts_file() announced (2 for the break that begins a file, else 1).
+TEST_F(OutputFilesTest, LinesOfEveryShortLengthAreCopiedWhole) {
+  for (auto line_end : {OutputFiles::LineEnd::LF, OutputFiles::LineEnd::CRLF}) {
+    const std::string eol = line_end == OutputFiles::LineEnd::CRLF ? "\r\n" : "\n";
+    OutputFiles out(dir, line_end);
+    out.set_main_path(dir / "MAIN.TAP");
+    std::mt19937 random(14);
+    std::string expected;
+    for (int round = 0; round < 20; ++round) {
+      for (std::size_t n = 0; n <= 40; ++n) {
+        std::string text(n, ' ');
+        for (char& c : text) c = static_cast<char>('#' + random() % 90);
+        const bool after_break = (random() % 4) != 0 || expected.empty();
+        const std::size_t announced = out.break_starts_file(after_break) ? 2 : 1;
+        EXPECT_EQ(out.write_line(text, after_break), announced) << "length " << n;
+        expected += (after_break ? eol : "") + text;
+      }
+    }
+    out.commit();
+    EXPECT_EQ(slurp(dir / "MAIN.TAP"), expected);
+  }
 }
 
 }  // namespace
