@@ -106,8 +106,8 @@ bool Interpreter::State::condition_slowly(std::uint32_t node) {
       if (!right || left->type == Type::String || right->type == Type::String) break;
       // The type rules of binary(): numeric when either side is; else integers (a logical is 0 or 1).
       if (left->type == Type::Numeric || right->type == Type::Numeric)
-        return compare(n.op, number_of(*left), number_of(*right));
-      return compare(n.op, integer_of(*left), integer_of(*right));
+        return holds(n.op, operand_number(*left), operand_number(*right));
+      return holds(n.op, operand_integer(*left), operand_integer(*right));
     }
     case NodeKind::Variable:
       if (n.simple) return truth(cell(program.refs[n.a]).value);
@@ -137,14 +137,14 @@ void Interpreter::State::binary(const Node& n, Value& left, const Value& right) 
       return;
     }
     if (!is_relation(n.op)) fail_at(n.pos, ErrorCode::NotNumeric, {}, "only + and comparisons apply to strings");
-    const bool r = compare(n.op, std::string_view(left.text), std::string_view(right.text));
+    const bool r = holds(n.op, std::string_view(left.text), std::string_view(right.text));
     set_logical(left, r);
     return;
   }
   const bool numeric = left.type == Type::Numeric || right.type == Type::Numeric || n.op == BinaryOp::Pow;
   if (numeric) {
     const double a = to_numeric(left), b = to_numeric(right);
-    if (is_relation(n.op)) return set_logical(left, compare(n.op, a, b));
+    if (is_relation(n.op)) return set_logical(left, holds(n.op, a, b));
     double r = 0.0;
     switch (n.op) {
       case BinaryOp::Add: r = a + b; break;
@@ -164,7 +164,7 @@ void Interpreter::State::binary(const Node& n, Value& left, const Value& right) 
     return set_numeric(left, r);
   }
   const std::int64_t a = to_integer(left), b = to_integer(right);
-  if (is_relation(n.op)) return set_logical(left, compare(n.op, a, b));
+  if (is_relation(n.op)) return set_logical(left, holds(n.op, a, b));
   std::int64_t r = 0;
   switch (n.op) {
     case BinaryOp::Add: r = a + b; break;

@@ -50,9 +50,10 @@ inline bool same_text(std::string_view a, std::string_view b) {
 }
 
 // The comparison rules of 4.5 for values known not to be strings: numeric when either side is,
-// else integers (a logical is 0 or 1). Shared by condition() and eval().
+// else integers (a logical is 0 or 1). Shared by condition() and eval(). (Names of their own: the
+// display-format printer has an integer_of with other rules for other values.)
 template <typename T>
-bool compare(BinaryOp op, const T& a, const T& b) {
+bool holds(BinaryOp op, const T& a, const T& b) {
   switch (op) {
     case BinaryOp::Eq: return a == b;
     case BinaryOp::Ne: return a != b;
@@ -63,10 +64,10 @@ bool compare(BinaryOp op, const T& a, const T& b) {
   }
 }
 // to_numeric / to_integer of a value known not to be a string (they cannot fail then).
-inline double number_of(const Value& v) {
+inline double operand_number(const Value& v) {
   return v.type == Type::Numeric ? v.numeric : v.type == Type::Integer ? double(v.integer) : v.logical ? 1.0 : 0.0;
 }
-inline std::int64_t integer_of(const Value& v) { return v.type == Type::Integer ? v.integer : v.logical ? 1 : 0; }
+inline std::int64_t operand_integer(const Value& v) { return v.type == Type::Integer ? v.integer : v.logical ? 1 : 0; }
 
 struct FormatCache {
   std::string spec;
@@ -233,13 +234,13 @@ struct Interpreter::State {
           const Value& a = relation_cell(r.left).value;
           if (a.type == Type::String) break;
           if (!r.right_is_variable) {
-            if (r.numeric || a.type == Type::Numeric) return compare(r.op, number_of(a), r.number);
-            return compare(r.op, integer_of(a), r.integer);
+            if (r.numeric || a.type == Type::Numeric) return holds(r.op, operand_number(a), r.number);
+            return holds(r.op, operand_integer(a), r.integer);
           }
           const Value& b = relation_cell(r.right).value;
           if (b.type == Type::String) break;
-          if (a.type == Type::Numeric || b.type == Type::Numeric) return compare(r.op, number_of(a), number_of(b));
-          return compare(r.op, integer_of(a), integer_of(b));
+          if (a.type == Type::Numeric || b.type == Type::Numeric) return holds(r.op, operand_number(a), operand_number(b));
+          return holds(r.op, operand_integer(a), operand_integer(b));
         }
         case NodeKind::Variable: {
           const Value& v = cell(program.refs[n.a]).value;
