@@ -53,29 +53,15 @@ Flow Interpreter::State::execute(std::uint32_t procedure) {
       case OpCode::Nop: ++pc; break;
       case OpCode::Assign: {
         const VarRef& ref = program.refs[in.a];
-        if (const Value* x = operand(program.nodes[in.b])) {  // a constant or a scalar: no copy
-          assign(element(ref), *x, ChangeOverride::Compute, &ref);
-        } else {
-          Value& v = push_scratch();
-          eval(in.b, v);
-          assign(element(ref), v, ChangeOverride::Compute, &ref);
-          pop_scratch();
-        }
+        with_value(in.b, [&](const Value& x) { assign(element(ref), x, ChangeOverride::Compute, &ref); });
         ++pc;
         break;
       }
       case OpCode::SetChange:
       case OpCode::SetActive: {
         // The value is stored, not tested: 0 or 1 only (error 420), unlike a condition.
-        bool x;
-        if (const Value* given = operand(program.nodes[in.b])) {  // `change(gcode) = TRUE`: no copy
-          x = given->type == Type::Logical ? given->logical : to_logical(*given);
-        } else {
-          Value& v = push_scratch();
-          eval(in.b, v);
-          x = v.type == Type::Logical ? v.logical : to_logical(v);
-          pop_scratch();
-        }
+        bool x = false;
+        with_value(in.b, [&](const Value& v) { x = v.type == Type::Logical ? v.logical : to_logical(v); });
         Cell& c = element(program.refs[in.a]);
         (in.op == OpCode::SetChange ? c.changed : c.active) = x;
         ++pc;

@@ -177,6 +177,16 @@ struct Interpreter::State {
     if (n.kind == NodeKind::Variable && n.simple) return &cell(program.refs[n.a]).value;
     return nullptr;
   }
+  // `use(value)` of expression `node`: a constant or scalar read in place (no copy), anything
+  // else evaluated into a scratch value (an assignment's source, `change(x) = TRUE`).
+  template <typename Use>
+  void with_value(std::uint32_t node, Use&& use) {
+    if (const Value* x = operand(program.nodes[node])) return use(*x);
+    Value& v = push_scratch();
+    eval(node, v);
+    use(v);
+    pop_scratch();
+  }
   const std::string& variable_name(const VarRef& ref) const;
   // Assignment with the change/active rules (3.5). A number or logical of the variable's own type
   // is stored inline; conversions, strings, untyped host variables and errors go out of line.
