@@ -287,6 +287,13 @@ char* put_whole(char* p, std::uint64_t whole) {
   return put_affix(p + kept, f.postfix, f.postfix_length);
 }
 
+// The quick path for a Value: nullptr when it is not a quick case.
+[[gnu::always_inline]] inline char* quick_value(char* out, const DisplayFormat& f, const Value& v) {
+  if (v.type == Type::Numeric) return quick_numeric(out, f, v.numeric);
+  if (v.type == Type::Integer) return quick_integer(out, f, v.integer);
+  return nullptr;
+}
+
 // Everything else. Kept out of line so that the quick path saves no registers.
 [[gnu::noinline]] char* write_general(char* out, const DisplayFormat& f, const Value& v) {
   // Affixes are copied whole (a fixed-size copy is a few moves; the length decides what counts).
@@ -308,17 +315,11 @@ char* put_whole(char* p, std::uint64_t whole) {
 
 static_assert(formatted_room == DisplayFormat::max_affix + exact::max_number + DisplayFormat::max_affix);
 
-char* fast::write_quick(char* out, const DisplayFormat& f, const Value& v) {
-  if (v.type == Type::Numeric) return quick_numeric(out, f, v.numeric);
-  if (v.type == Type::Integer) return quick_integer(out, f, v.integer);
-  return nullptr;
-}
+char* fast::write_quick(char* out, const DisplayFormat& f, const Value& v) { return quick_value(out, f, v); }
 
 char* write_formatted(char* out, const DisplayFormat& f, const Value& v) {
-  char* end = nullptr;
-  if (v.type == Type::Numeric) end = quick_numeric(out, f, v.numeric);
-  else if (v.type == Type::Integer) end = quick_integer(out, f, v.integer);
-  return end != nullptr ? end : write_general(out, f, v);
+  if (char* end = quick_value(out, f, v)) return end;
+  return write_general(out, f, v);
 }
 
 char* write_formatted(char* out, const DisplayFormat& f, std::int64_t value) {
