@@ -40,7 +40,7 @@ void split_lines(std::string_view chunk, std::string& partial, const OutputFiles
 
 // A line's bytes without a library call (which costs more than copying a 20-byte NC block): word
 // copies, the last one overlapping the one before. No byte outside the line is read.
-void copy_line(char* to, std::string_view line) {
+[[gnu::always_inline]] inline void copy_line(char* to, std::string_view line) {
   const char* from = line.data();
   const std::size_t n = line.size();
   auto copy = [&]<std::size_t Word>(std::size_t at) {
@@ -60,6 +60,13 @@ void copy_line(char* to, std::string_view line) {
   } else if (n > 0) {
     to[0] = from[0], to[n / 2] = from[n / 2], to[n - 1] = from[n - 1];  // 1 to 3 bytes: all of them
   }
+}
+
+// A line's break (`eol` bytes: none, LF or CR LF) and then its bytes, from `out`.
+[[gnu::always_inline]] inline void put_line(char* out, std::size_t eol, std::string_view line) {
+  if (eol == 2) *out++ = '\r';
+  if (eol > 0) *out++ = '\n';
+  copy_line(out, line);
 }
 
 [[noreturn]] void io_failure(const std::string& what, const fs::path& path) {
@@ -167,27 +174,21 @@ void OutputFiles::switch_to(std::size_t index) {
     append(place_slots(line, slot_line_));
     return lines;
   }
-  char* out = room(eol + line.size());
-  if (eol == 2) *out++ = '\r';
-  if (eol > 0) *out++ = '\n';
-  if (!line.empty()) std::memcpy(out, line.data(), line.size());
+  put_line(room(eol + line.size()), eol, line);
   return lines;
 }
 
 std::size_t OutputFiles::write_line(std::string_view line, bool after_break) {
   const std::size_t eol = after_break && !break_taken_ ? (line_end_ == LineEnd::CRLF ? 2 : 1) : 0;
-  const std::size_t lines = eol > 0 && entries_[current_].size == 0 ? 2 : 1;
+  const std::size_t lines = break_starts_file(after_break) ? 2 : 1;
   break_taken_ = false;
   const std::size_t n = eol + line.size();
   // Placeholders, or a buffer to drain first: out of line, so that the usual line calls nothing.
   if (unwritten_slots_ > 0 || buffer_.size() - buffered_ < n) return write_slowly(line, eol, lines);
   // The usual line: its break and its text in one copy.
   entries_[current_].size += n;
-  char* out = buffer_.data() + buffered_;
+  put_line(buffer_.data() + buffered_, eol, line);
   buffered_ += n;
-  if (eol == 2) *out++ = '\r';
-  if (eol > 0) *out++ = '\n';
-  copy_line(out, line);
   return lines;
 }
 
