@@ -90,6 +90,10 @@ struct CompileOptions {
   // it when the line runs: a display format into a format variable (`xpos_f = '5.3p'`: error 423,
   // with the spelling meant), a number into a text variable (394), text into a number (386).
   bool check_constant_assignments = false;
+  // A call of a small procedure that only assigns and tests (no parameters, locals, generate
+  // statements or calls) runs its body copied in place, without a call; a run with a trace still
+  // shows it as a call. Off: every call is a call (the tests compare both).
+  bool inline_leaf_calls = true;
   // An editor's index of the post's names (gppl/symbols.hpp), filled by the compile, also by one
   // that fails. Null: none is kept.
   SymbolIndex* symbols = nullptr;

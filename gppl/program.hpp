@@ -121,16 +121,17 @@ struct GenItem {
 };
 
 enum class OpCode : std::uint8_t {
-  Nop, Assign, SetChange, SetActive, JumpIfFalse, LoopIfFalse, Jump, Call, Generate, Trace, Abort, Exit, Return,
-  Input, Print
+  Nop, Assign, SetChange, SetActive, JumpIfFalse, LoopIfFalse, Jump, Call, InlineLeaf, Generate, Trace, Abort, Exit,
+  Return, Input, Print
 };
 
 struct Instruction {
   OpCode op = OpCode::Nop;
-  std::uint32_t a = 0;  // Assign/Set*: target ref; Jump*: target instruction; Call: procedure; Generate/Print: first
-                        // item; Trace: constant; Input: Program::inputs index
+  std::uint32_t a = 0;  // Assign/Set*: target ref; Jump*: target instruction; Call/InlineLeaf: procedure;
+                        // Generate/Print: first item; Trace: constant; Input: Program::inputs index
   std::uint32_t b = 0;  // Assign/Set*/JumpIfFalse/LoopIfFalse/Trace: expression node; Generate/Print: item count;
-                        // Call: first arg
+                        // Call: first arg; InlineLeaf: the instruction after the procedure's copied body,
+                        // which follows it (compile/inline_calls.cpp)
   std::uint32_t c = 0;  // LoopIfFalse: exit target; Call: argument count
   SourcePos pos;
 };

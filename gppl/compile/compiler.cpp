@@ -298,6 +298,7 @@ std::shared_ptr<const Program> Compiler::finish() {
   declare_all();
   for (std::uint32_t p = 0; p < procedure_sources_.size(); ++p) compile_procedure(p);
   if (!errors_.empty()) throw Errors(std::move(errors_));
+  if (options_.inline_leaf_calls) inline_leaf_calls(*program_);
   for (const auto& [key, id] : globals_) program_->global_index.emplace(key, id);
   for (const auto& [key, id] : procedures_) program_->procedure_index.emplace(key, id);
   return program_;

@@ -15,6 +15,9 @@
 
 namespace gppl {
 
+// Copies the bodies of small leaf procedures into their callers (inline_calls.cpp).
+void inline_leaf_calls(Program& program);
+
 class Compiler {
 public:
   explicit Compiler(const CompileOptions& options);

@@ -6,11 +6,14 @@
 
 namespace gppl {
 
+void Interpreter::State::calls_too_deep() const {
+  fail(ErrorCode::StackOverflow, {},
+       fmt::format("procedure calls nest deeper than {} levels (runaway recursion?)", max_call_depth));
+}
+
 Flow Interpreter::State::run(std::uint32_t procedure, std::uint32_t args_list, std::uint32_t arg_count) {
   const Procedure& proc = program.procedures[procedure];
-  if (int(frames.size()) >= max_call_depth)
-    fail(ErrorCode::StackOverflow, {},
-         fmt::format("procedure calls nest deeper than {} levels (runaway recursion?)", max_call_depth));
+  if (int(frames.size()) >= max_call_depth) [[unlikely]] calls_too_deep();
   const std::uint32_t base = stack_top;
   if (arg_count == 0 && proc.frame_size == 0) frames.push_back(Frame{procedure, base});  // most: nothing to set up
   else enter(proc, procedure, args_list, arg_count);
@@ -82,6 +85,20 @@ Flow Interpreter::State::execute(std::uint32_t procedure) {
         ++pc;
         break;
       }
+      case OpCode::InlineLeaf:
+        // The procedure's body follows (compile/inline_calls.cpp). A trace shows calls: then it
+        // is one, and the copy is skipped.
+        if (trace == nullptr) [[likely]] {
+          if (int(frames.size()) >= max_call_depth) [[unlikely]] calls_too_deep();
+          ++pc;
+          break;
+        } else {
+          const Flow flow = run(in.a, 0, 0);
+          current = &in;
+          if (flow != Flow::Normal) return flow;
+          pc = in.b;
+          break;
+        }
       case OpCode::Generate:
         generate(in.a, in.b);
         ++pc;

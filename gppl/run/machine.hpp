@@ -272,6 +272,7 @@ struct Interpreter::State {
 
   // execute.cpp
   Flow run(std::uint32_t procedure, std::uint32_t args_list, std::uint32_t arg_count);
+  [[noreturn]] void calls_too_deep() const;  // error 405: max_call_depth frames are open
   // The new frame of a procedure with parameters or locals: arguments, fresh locals (3.4, 5.7).
   void enter(const Procedure& proc, std::uint32_t procedure, std::uint32_t args_list, std::uint32_t arg_count);
   Flow execute(std::uint32_t procedure);
