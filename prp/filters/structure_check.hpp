@@ -8,20 +8,20 @@
 #include <set>
 #include <string>
 
+#include "prp/filters/command_step.hpp"
 #include "prp/filters/kind_source.hpp"
 #include "prp/prp.hpp"
 
 namespace prp {
 
-class StructureCheck final : public KindSource {
+class StructureCheck final : public CommandStep {
 public:
-  StructureCheck(toolpath::CommandSource& input, const MachineParameters& params, WarningSink warn);
-  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
+  StructureCheck(const MachineParameters& params, WarningSink warn);
+  void apply(toolpath::Command& c, CommandKind& kind) override;
 
 private:
   void check(const toolpath::Command& c, CommandKind kind);
 
-  KindedInput input_;
   WarningSink warn_;
   std::string gen_procs_;
   bool procs_off_, calls_with_parameters_;  // gen_procs N, D
