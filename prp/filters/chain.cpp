@@ -48,7 +48,8 @@ private:
   Steps* steps_ = nullptr;  // the last layer, when it is one of steps
 };
 
-// The filters before procedure generation: checks, drill expansion, mode commands, rotary axes.
+// The filters before procedure generation: checks, drill expansion, mode commands, rotary axes,
+// default positions.
 void add_structure_filters(Chain& chain, const MachineParameters& params, const WarningSink& warn) {
   chain.add_step<StructureCheck>(params, warn);
   // Before procedure generation reorders the jobs: it follows the tool and the side in stream order.
@@ -58,6 +59,8 @@ void add_structure_filters(Chain& chain, const MachineParameters& params, const 
   chain.add_step<RotaryAxes>(params, warn);
   if (params.logical("init_cpos")) chain.add<InitCpos>();
   if (WireGuides::needed(params)) chain.add<WireGuides>(params);
+  // Of the command alone (spec 3.8), so here, where it joins the steps before it in one layer.
+  if (params.has("dflt_start") || params.has("dflt_end")) chain.add_step<DefaultPositions>(params);
 }
 
 }  // namespace
@@ -89,7 +92,6 @@ std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParamet
   // After the filters that add commands to inline jobs, so that those commands travel with their job.
   if (forecast && two_passes_possible(params)) chain->add<ProcedureGeneration>(params, std::move(*forecast));
   else if (ProcedureGeneration::needed(params)) chain->add<ProcedureGeneration>(params);
-  if (params.has("dflt_start") || params.has("dflt_end")) chain->add<DefaultPositions>(params);
   if (params.numeric("eps_line") > 0) chain->add<ShortLineFilter>(params.numeric("eps_line"));
   // Always there: even a machine that takes every arc is not sent one that is no arc (check_circle).
   chain->add<ArcFilter>(ArcSettings::from(params), warn);

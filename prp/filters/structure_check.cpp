@@ -102,19 +102,16 @@ void StructureCheck::check(const toolpath::Command& c, CommandKind kind) {
   }
 }
 
-DefaultPositions::DefaultPositions(toolpath::CommandSource& input, const MachineParameters& p) : input_(input) {
+DefaultPositions::DefaultPositions(const MachineParameters& p)
+    : CommandStep(bit(CommandKind::start_program) | bit(CommandKind::end_program)) {
   if (p.has("dflt_start")) start_ = p.point("dflt_start");
   if (p.has("dflt_end")) end_ = p.point("dflt_end");
 }
 
-bool DefaultPositions::next_with_kind(toolpath::Command& out, CommandKind& kind) {
-  if (!input_.next(out, kind)) return false;
-  if (kind != CommandKind::start_program && kind != CommandKind::end_program) return true;
-  if (!out.is_stream_command()) return true;
-  if (out.find("xpos") || out.find("ypos") || out.find("zpos")) return true;
-  if (start_ && kind == CommandKind::start_program) set_point(out, *start_);
-  if (end_ && kind == CommandKind::end_program) set_point(out, *end_);
-  return true;
+void DefaultPositions::apply(toolpath::Command& c, CommandKind& kind) {
+  if (c.find("xpos") || c.find("ypos") || c.find("zpos")) return;
+  if (start_ && kind == CommandKind::start_program) set_point(c, *start_);
+  if (end_ && kind == CommandKind::end_program) set_point(c, *end_);
 }
 
 }  // namespace prp

@@ -32,14 +32,14 @@ private:
 };
 
 // Fills the program's start and end positions from dflt_start / dflt_end (spec 3.8) when the
-// toolpath does not give them: @start_program and @end_program without xpos, ypos and zpos.
-class DefaultPositions final : public KindSource {
+// toolpath does not give them: @start_program and @end_program without xpos, ypos and zpos. It
+// looks at nothing but the command, so it may run before procedure generation moves commands.
+class DefaultPositions final : public CommandStep {
 public:
-  DefaultPositions(toolpath::CommandSource& input, const MachineParameters& params);
-  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
+  explicit DefaultPositions(const MachineParameters& params);
+  void apply(toolpath::Command& c, CommandKind& kind) override;
 
 private:
-  KindedInput input_;
   std::optional<Eigen::Vector3d> start_, end_;
 };
 

@@ -80,7 +80,7 @@ TEST(DefaultPositions, FillsOnlyWhatTheToolpathLeavesOpen) {
     auto params = prp::load_source(kPrp, "s.prp", units);
     ListSource source({command("@start_program", {}), command("@start_program", {{"xpos", num(1)}}),
                        command("@end_program", {})});
-    prp::DefaultPositions filter(source, params);
+    prp::StepFilter<prp::DefaultPositions> filter(source, params);
     auto out = drain(filter);
     EXPECT_EQ(get(out[0], "ypos"), units == prp::Units::Metric ? 200 : 7.874);
     EXPECT_EQ(get(out[0], "zpos"), units == prp::Units::Metric ? 100 : 3.937);
