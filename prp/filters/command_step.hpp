@@ -23,7 +23,7 @@ public:
   virtual ~CommandStep() = default;
   // Called for each stream command whose kind is in kinds(), in stream order.
   virtual void apply(toolpath::Command& c, CommandKind& kind) = 0;
-  // Any other command passes untouched; a step may change its kinds as it goes.
+  // Any other command passes untouched. A step may change its kinds as it goes, in apply() only.
   KindSet kinds() const { return kinds_; }
 
 protected:
@@ -35,18 +35,29 @@ protected:
 class Steps final : public KindSource {
 public:
   explicit Steps(toolpath::CommandSource& input) : input_(input) {}
-  void add(std::unique_ptr<CommandStep> step) { steps_.push_back(std::move(step)); }
+  void add(std::unique_ptr<CommandStep> step) {
+    wanted_ |= step->kinds();
+    steps_.push_back(std::move(step));
+  }
   bool next_with_kind(toolpath::Command& out, CommandKind& kind) override {
     if (!input_.next(out, kind)) return false;
-    if (out.is_stream_command())
-      for (const auto& step : steps_)
-        if (has(step->kinds(), kind)) step->apply(out, kind);
+    if (has(wanted_, kind) && out.is_stream_command()) apply(out, kind);  // most commands no step wants
     return true;
   }
 
 private:
+  void apply(toolpath::Command& out, CommandKind& kind) {
+    KindSet wanted = 0;
+    for (const auto& step : steps_) {
+      if (has(step->kinds(), kind)) step->apply(out, kind);
+      wanted |= step->kinds();  // as the step now has them
+    }
+    wanted_ = wanted;
+  }
+
   KindedInput input_;
   std::vector<std::unique_ptr<CommandStep>> steps_;
+  KindSet wanted_ = 0;  // the kinds of all the steps
 };
 
 // One step as a filter of its own.
