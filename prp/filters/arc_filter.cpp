@@ -160,13 +160,16 @@ bool ArcFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
 }
 
 // Follows a stream command: the tool position (moves only, as ToolPosition::update), apos/bpos
-// (any command) and the kinematic-set history.
-void ArcFilter::follow(const toolpath::Command& out, CommandKind kind, const CommandFields& f) {
+// (any command) and the kinematic-set history. Inlined into next_with_kind(), which every command
+// takes.
+[[gnu::always_inline]] inline void ArcFilter::follow(const toolpath::Command& out, CommandKind kind,
+                                                     const CommandFields& f) {
   const bool moves = has(kMovesTool, kind);
   if (!moves || f.names_set_end_point()) history_.observe(out, kind);
   if (moves)
     for (int i = 0; i < 3; ++i)
-      if (const toolpath::Value* v = f[static_cast<std::uint8_t>(F::xpos + i)]; v && is_number(*v)) position_.set_axis(i, number_of(*v));
+      if (const toolpath::Value* v = f[static_cast<std::uint8_t>(F::xpos + i)]; v && is_number(*v))
+        position_.set_axis(i, number_of(*v));
   if (const toolpath::Value* v = f[F::apos]; v && is_number(*v)) apos_ = number_of(*v);
   if (const toolpath::Value* v = f[F::bpos]; v && is_number(*v)) bpos_ = number_of(*v);
 }
@@ -176,10 +179,12 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Command
   piece_ = pieces_ = chords_ = 0;
   cuts_.clear();
   five_axis_ = kind == CommandKind::arc_5x;
-  rotary_from_[0] = apos_;
-  rotary_from_[1] = bpos_;
-  rotary_to_[0] = f.number(F::apos);
-  rotary_to_[1] = f.number(F::bpos);
+  if (five_axis_) {  // emit() turns the rotary axes of an @arc_5x's pieces only
+    rotary_from_[0] = apos_;
+    rotary_from_[1] = bpos_;
+    rotary_to_[0] = f.number(F::apos);
+    rotary_to_[1] = f.number(F::bpos);
+  }
 
   Plane plane = Plane::XY;
   if (const toolpath::Value* v = f[F::arc_plane]) {

@@ -59,7 +59,7 @@ public:
 private:
   void plan(const toolpath::Command& arc, CommandKind kind, const CommandFields& f);
   void emit(toolpath::Command& out, CommandKind& kind);
-  void follow(const toolpath::Command& out, CommandKind kind, const CommandFields& f);
+  inline void follow(const toolpath::Command& out, CommandKind kind, const CommandFields& f);  // arc_filter.cpp
 
   KindedInput input_;
   ArcSettings settings_;
