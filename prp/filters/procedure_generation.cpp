@@ -95,7 +95,9 @@ std::optional<JobForecast> ProcedureGeneration::forecast(toolpath::CommandSource
 }
 
 bool ProcedureGeneration::next_with_kind(toolpath::Command& out, CommandKind& kind) {
+  // The phases that last: a structured toolpath passing through, the bodies of two passes.
   if (phase_ == Phase::PassThrough && !main_ && !has_held_) return input_.next(out, kind);
+  if (phase_ == Phase::Live) return next_live(out, kind);
   return produce(out, kind);
 }
 
