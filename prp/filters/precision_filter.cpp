@@ -90,17 +90,22 @@ PrecisionFilter::PrecisionFilter(toolpath::CommandSource& input, PrecisionSettin
     whole_limit_of_[k] = whole_stays_ && grid_of_[k] ? grid_of_[k]->whole_limit() : -1.0;
   }
   for (double& axis : sent_) axis = std::numeric_limits<double>::quiet_NaN();
+  for (double& value : kept_) value = std::numeric_limits<double>::quiet_NaN();
 }
 
 // True when adjust() would leave x as it is. Each test is false for zero_value <= 0 and for an
 // unknown (NaN) axis, as adjust() would skip them.
-inline bool PrecisionFilter::leaves(double x, int k, bool axis) const {
+// The value the parameter had the last time it passed these tests (a contour's depth, an arc's
+// radius) passes again without them: they give the same for any x == kept_[k] (NaN never is; -0
+// and +0 fare alike).
+inline bool PrecisionFilter::leaves(double x, int k, bool axis) {
   // A whole number is at least 1 from 0, so it snaps to 0 only for a zero_value above 1.
-  if (!DecimalGrid::whole_within(x, whole_limit_of_[k])) {
+  if (!DecimalGrid::whole_within(x, whole_limit_of_[k]) && x != kept_[k]) {
     if (s_.every_value_in_full || (std::abs(x) < zero_of_[k] && x != 0.0)) return false;
     // With whole_stays_, x is known to be off the grid's whole-number shortcut.
     const DecimalGrid* grid = grid_of_[k];
     if (grid && !(whole_stays_ ? grid->round_general(x) == x : grid->keeps(x))) return false;
+    kept_[k] = x;
   }
   return !(axis && std::abs(x - sent_[k]) < s_.zero_value && x != sent_[k]);
 }

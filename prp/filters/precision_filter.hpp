@@ -63,7 +63,7 @@ public:
   bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
 private:
-  bool leaves(double x, int k, bool axis) const;
+  bool leaves(double x, int k, bool axis);  // remembers a fraction that passes (kept_)
   void adjust(toolpath::Value& v, int k, bool moves);  // the steps of spec 3.1, one by one
 
   KindedInput input_;
@@ -80,6 +80,7 @@ private:
   bool whole_stays_;
   double whole_limit_of_[16];
   double sent_[3];  // where the tool is sent, axis by axis; NaN while unknown (it never snaps to it)
+  double kept_[16];  // per parameter, the last fraction it left as it was (NaN: none; never with every_value_in_full)
   CommandFields own_fields_;  // when the input hands on none
 };
 
