@@ -12,8 +12,6 @@
 namespace prp {
 namespace {
 
-using toolpath::ParamKey;
-
 // The parameters the filter touches are the first CommandFields: lengths (rounded with the
 // coordinates; the first three are the tool position), then the feed and the spindle speed.
 using F = CommandFields;
@@ -94,10 +92,9 @@ PrecisionFilter::PrecisionFilter(toolpath::CommandSource& input, PrecisionSettin
 }
 
 // True when adjust() would leave x as it is. Each test is false for zero_value <= 0 and for an
-// unknown (NaN) axis, as adjust() would skip them.
-// The value the parameter had the last time it passed these tests (a contour's depth, an arc's
-// radius) passes again without them: they give the same for any x == kept_[k] (NaN never is; -0
-// and +0 fare alike).
+// unknown (NaN) axis, as adjust() would skip them. A fraction equal to the last one the tests
+// kept for this parameter (kept_: a contour's depth, an arc's radius) skips them: they give the
+// same for equal values (NaN equals none; -0 and +0 fare alike).
 inline bool PrecisionFilter::leaves(double x, int k, bool axis) {
   // A whole number is at least 1 from 0, so it snaps to 0 only for a zero_value above 1.
   if (!DecimalGrid::whole_within(x, whole_limit_of_[k]) && x != kept_[k]) {
