@@ -13,59 +13,8 @@ using toolpath::geometry::Arc;
 using toolpath::geometry::Direction;
 using toolpath::geometry::Plane;
 
-namespace {
-
-// The parameters the filter reads, found in one pass over a command's parameters (the first of
-// each name, as with Command::find): what plan() needs of an arc, the tool position and apos/bpos
-// it follows on every command, and whether a move names a set end point (for SetHistory).
-enum ArcField { kX, kY, kZ, kApos, kBpos, kXcenter, kYcenter, kXrel, kYrel, kZstart, kSize, kPlane, kDirection,
-                kPlaneM, kRadius, kFieldCount };
-
 using toolpath::ParamKey;
-
-// Per key: its ArcField, kSetEndPoint for a set end point, kOther for anything else.
-constexpr std::uint8_t kSetEndPoint = kFieldCount, kOther = kFieldCount + 1;
-constexpr auto kCodes = [] {
-  KeyTable<std::uint8_t> t{};
-  t.fill(kOther);
-  const std::pair<ParamKey, ArcField> fields[] = {
-      {ParamKey::xpos, kX},          {ParamKey::ypos, kY},
-      {ParamKey::zpos, kZ},          {ParamKey::apos, kApos},
-      {ParamKey::bpos, kBpos},       {ParamKey::xcenter, kXcenter},
-      {ParamKey::ycenter, kYcenter}, {ParamKey::xcenter_rel, kXrel},
-      {ParamKey::ycenter_rel, kYrel}, {ParamKey::zstart, kZstart},
-      {ParamKey::arc_size, kSize},   {ParamKey::arc_plane, kPlane},
-      {ParamKey::arc_direction, kDirection}, {ParamKey::arc_plane_m, kPlaneM},
-      {ParamKey::radius, kRadius}};
-  for (auto [key, field] : fields) at(t, key) = static_cast<std::uint8_t>(field);
-  for (ParamKey key : kSetEndPoints) at(t, key) = kSetEndPoint;
-  return t;
-}();
-
-}  // namespace
-
-struct ArcFilter::Fields {
-  // From the last parameter to the first, each stored under its code without a test: the first of
-  // each name is stored last (as Command::find finds it), and any other parameter lands in a slot
-  // nobody reads.
-  explicit Fields(const toolpath::Command& c) {
-    const toolpath::Parameter* p = c.parameters.data() + c.parameters.size();
-    while (p != c.parameters.data()) {
-      --p;
-      slots[at(kCodes, p->key)] = &p->value;
-    }
-    names_set_end_point = slots[kSetEndPoint] != nullptr;
-  }
-  const toolpath::Value* find(ArcField f) const { return slots[f]; }
-  // As prp::number().
-  std::optional<double> number(ArcField f) const {
-    const toolpath::Value* v = slots[f];
-    if (!v || !is_number(*v)) return std::nullopt;
-    return number_of(*v);
-  }
-  const toolpath::Value* slots[kOther + 1] = {};  // per ArcField, then kSetEndPoint and kOther
-  bool names_set_end_point = false;
-};
+using F = CommandFields;
 
 namespace {
 
@@ -190,9 +139,12 @@ bool ArcFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
     emit(out, kind);
     return true;
   }
+  fields_ = nullptr;
   if (!input_.next(out, kind)) return false;
   if (!out.is_stream_command()) return true;  // followed by nothing here, the set history included
-  const Fields f(out);
+  CommandFields& f = handed_;
+  f.find(out);
+  fields_ = &f;
   if (kind == CommandKind::arc || kind == CommandKind::arc_5x) {
     plan(out, kind, f);
     if (pieces_ > 0) {
@@ -208,34 +160,39 @@ bool ArcFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
 }
 
 // Follows a stream command: the tool position (moves only, as ToolPosition::update), apos/bpos
-// (any command) and the kinematic-set history.
-void ArcFilter::follow(const toolpath::Command& out, CommandKind kind, const Fields& f) {
+// (any command) and the kinematic-set history. Inlined into next_with_kind(), which every command
+// takes.
+[[gnu::always_inline]] inline void ArcFilter::follow(const toolpath::Command& out, CommandKind kind,
+                                                     const CommandFields& f) {
   const bool moves = has(kMovesTool, kind);
-  if (!moves || f.names_set_end_point) history_.observe(out, kind);
+  if (!moves || f.names_set_end_point()) history_.observe(out, kind);
   if (moves)
     for (int i = 0; i < 3; ++i)
-      if (const toolpath::Value* v = f.slots[kX + i]; v && is_number(*v)) position_.set_axis(i, number_of(*v));
-  if (const toolpath::Value* v = f.slots[kApos]; v && is_number(*v)) apos_ = number_of(*v);
-  if (const toolpath::Value* v = f.slots[kBpos]; v && is_number(*v)) bpos_ = number_of(*v);
+      if (const toolpath::Value* v = f[static_cast<std::uint8_t>(F::xpos + i)]; v && is_number(*v))
+        position_.set_axis(i, number_of(*v));
+  if (const toolpath::Value* v = f[F::apos]; v && is_number(*v)) apos_ = number_of(*v);
+  if (const toolpath::Value* v = f[F::bpos]; v && is_number(*v)) bpos_ = number_of(*v);
 }
 
 // Decides what replaces the arc (spec 3.2 process_arc); pieces_ stays 0 when it passes unchanged.
-void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Fields& f) {
+void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const CommandFields& f) {
   piece_ = pieces_ = chords_ = 0;
   cuts_.clear();
   five_axis_ = kind == CommandKind::arc_5x;
-  rotary_from_[0] = apos_;
-  rotary_from_[1] = bpos_;
-  rotary_to_[0] = f.number(kApos);
-  rotary_to_[1] = f.number(kBpos);
+  if (five_axis_) {  // emit() turns the rotary axes of an @arc_5x's pieces only
+    rotary_from_[0] = apos_;
+    rotary_from_[1] = bpos_;
+    rotary_to_[0] = f.number(F::apos);
+    rotary_to_[1] = f.number(F::bpos);
+  }
 
   Plane plane = Plane::XY;
-  if (const toolpath::Value* v = f.find(kPlane)) {
+  if (const toolpath::Value* v = f[F::arc_plane]) {
     auto p = toolpath::geometry::parse_plane(v->text);
     if (!p) throw StreamError(c, fmt::format("arc_plane `{}` is none of XY, YZ, ZX", v->text));
     plane = *p;
   }
-  const toolpath::Value* dir = f.find(kDirection);
+  const toolpath::Value* dir = f[F::arc_direction];
   if (!dir || !(toolpath::iequals(dir->text, "CW") || toolpath::iequals(dir->text, "CCW")))
     throw StreamError(c, "expected arc_direction CW or CCW");
   const Direction direction = toolpath::iequals(dir->text, "CW") ? Direction::CW : Direction::CCW;
@@ -245,15 +202,15 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Fields&
   static constexpr std::string_view pos_names[] = {"xpos", "ypos", "zpos"};
   Eigen::Vector3d end;
   for (int i = 0; i < 3; ++i) {
-    auto v = f.number(static_cast<ArcField>(kX + i));
+    auto v = f.number(static_cast<F::Field>(F::xpos + i));
     if (!v) v = position_.axis(i);
     if (!v) throw StreamError(c, fmt::format("the arc has no {} and the tool position is unknown", pos_names[i]));
     end[i] = *v;
   }
   // Centre and start in the arc plane: xcenter/ycenter and the *_rel values are the plane's first
   // and second coordinates (XY: x y, YZ: y z, ZX: z x).
-  auto cx = f.number(kXcenter), cy = f.number(kYcenter);
-  auto rx = f.number(kXrel), ry = f.number(kYrel);
+  auto cx = f.number(F::xcenter), cy = f.number(F::ycenter);
+  auto rx = f.number(F::xcenter_rel), ry = f.number(F::ycenter_rel);
   Eigen::Vector3d start, centre;
   for (int k = 0; k < 2; ++k) {
     const int axis = k == 0 ? a.first : a.second;
@@ -266,20 +223,20 @@ void ArcFilter::plan(const toolpath::Command& c, CommandKind kind, const Fields&
     start[axis] = rel ? *cen - *rel : here.value_or(*cen);
     if (!rel && !here) throw StreamError(c, "the arc's start is unknown (no xcenter_rel/ycenter_rel)");
   }
-  auto zstart = plane == Plane::XY ? f.number(kZstart) : std::nullopt;
+  auto zstart = plane == Plane::XY ? f.number(F::zstart) : std::nullopt;
   start[a.normal] = zstart ? *zstart : position_.axis(a.normal).value_or(end[a.normal]);
   centre[a.normal] = start[a.normal];
   const Spokes spokes(start, end, centre, a);
   if (settings_.check_circles)
-    check_circle(c, spokes, f.number(kRadius), settings_.circle_tolerance, !settings_.work_out_every_arc);
+    check_circle(c, spokes, f.number(F::radius), settings_.circle_tolerance, !settings_.work_out_every_arc);
 
   bool tilted = false;  // in the machine's axes the arc lies in none of XY, YZ, ZX
-  if (const toolpath::Value* m = f.find(kPlaneM)) tilted = !toolpath::geometry::parse_plane(m->text);
+  if (const toolpath::Value* m = f[F::arc_plane_m]) tilted = !toolpath::geometry::parse_plane(m->text);
   if (!settings_.work_out_every_arc &&
       surely_passes(settings_, spokes, end[a.normal] - start[a.normal], plane, direction, five_axis_, tilted))
     return;
 
-  arc_ = toolpath::geometry::make_arc(start, end, centre, plane, direction, f.number(kSize));
+  arc_ = toolpath::geometry::make_arc(start, end, centre, plane, direction, f.number(F::arc_size));
   const ArcSettings& s = settings_;
   const bool helical = std::abs(arc_.rise()) > std::max(s.zero_value, 1e-9);
   const bool in_machine_plane = plane == s.machine_plane;
@@ -361,7 +318,9 @@ void ArcFilter::emit(toolpath::Command& out, CommandKind& kind) {
     }
   }
   if (last) out.trace = original_.trace;  // the original post's output belongs to the whole arc
-  follow(out, kind, Fields(out));
+  handed_.find(out);
+  fields_ = &handed_;
+  follow(out, kind, handed_);
 }
 
 }  // namespace prp

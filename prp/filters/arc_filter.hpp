@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "prp/filters/command_fields.hpp"
 #include "prp/filters/kind_source.hpp"
 #include "prp/filters/kinematic_sets.hpp"
 #include "prp/filters/motion.hpp"
@@ -56,10 +57,9 @@ public:
   bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
 private:
-  struct Fields;  // what the filter reads of a command, found in one pass
-  void plan(const toolpath::Command& arc, CommandKind kind, const Fields& f);
+  void plan(const toolpath::Command& arc, CommandKind kind, const CommandFields& f);
   void emit(toolpath::Command& out, CommandKind& kind);
-  void follow(const toolpath::Command& out, CommandKind kind, const Fields& f);
+  inline void follow(const toolpath::Command& out, CommandKind kind, const CommandFields& f);  // arc_filter.cpp
 
   KindedInput input_;
   ArcSettings settings_;
@@ -70,6 +70,7 @@ private:
   std::optional<double> apos_, bpos_;  // rotary angles of the last command that gave them
   bool five_axis_ = false;      // the arc being replaced is an @arc_5x
   std::optional<double> rotary_from_[2], rotary_to_[2];  // apos, bpos at its start and end
+  CommandFields handed_;        // of the command handed out last (KindSource::fields())
   toolpath::Command original_;  // the arc being replaced
   toolpath::geometry::Arc arc_;
   std::vector<double> cuts_;    // piece boundaries as offsets from the start, 0 .. sweep

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "prp/filters/arc_filter.hpp"
+#include "prp/filters/command_step.hpp"
 #include "prp/filters/compensation_check.hpp"
 #include "prp/filters/drill_expansion.hpp"
 #include "prp/filters/full_coordinates.hpp"
@@ -28,24 +29,38 @@ public:
     auto filter = std::make_unique<Filter>(*last_, std::forward<Args>(args)...);
     last_ = filter.get();
     filters_.push_back(std::move(filter));
+    steps_ = nullptr;
+  }
+  // A step joins the steps added just before it in one layer.
+  template <class Step, class... Args>
+  void add_step(Args&&... args) {
+    if (!steps_) {
+      add<Steps>();
+      steps_ = static_cast<Steps*>(last_);
+    }
+    steps_->add(std::make_unique<Step>(std::forward<Args>(args)...));
   }
   bool next(toolpath::Command& out) override { return last_->next(out); }
 
 private:
   toolpath::CommandSource* last_;
   std::vector<std::unique_ptr<toolpath::CommandSource>> filters_;
+  Steps* steps_ = nullptr;  // the last layer, when it is one of steps
 };
 
-// The filters before procedure generation: checks, drill expansion, mode commands, rotary axes.
+// The filters before procedure generation: checks, drill expansion, mode commands, rotary axes,
+// default positions.
 void add_structure_filters(Chain& chain, const MachineParameters& params, const WarningSink& warn) {
-  chain.add<StructureCheck>(params, warn);
+  chain.add_step<StructureCheck>(params, warn);
   // Before procedure generation reorders the jobs: it follows the tool and the side in stream order.
-  if (CompensationCheck::needed(params)) chain.add<CompensationCheck>(params.numeric("min_delt_arc_rad"), warn);
+  if (CompensationCheck::needed(params)) chain.add_step<CompensationCheck>(params.numeric("min_delt_arc_rad"), warn);
   if (DrillExpansion::needed(params)) chain.add<DrillExpansion>(params, warn);
   if (!ModeCommands::wanted(params).empty()) chain.add<ModeCommands>(params, warn);
-  chain.add<RotaryAxes>(params, warn);
+  chain.add_step<RotaryAxes>(params, warn);
   if (params.logical("init_cpos")) chain.add<InitCpos>();
   if (WireGuides::needed(params)) chain.add<WireGuides>(params);
+  // Of the command alone (spec 3.8), so here, where it joins the steps before it in one layer.
+  if (params.has("dflt_start") || params.has("dflt_end")) chain.add_step<DefaultPositions>(params);
 }
 
 }  // namespace
@@ -77,7 +92,6 @@ std::unique_ptr<toolpath::CommandSource> build_filter_chain(const MachineParamet
   // After the filters that add commands to inline jobs, so that those commands travel with their job.
   if (forecast && two_passes_possible(params)) chain->add<ProcedureGeneration>(params, std::move(*forecast));
   else if (ProcedureGeneration::needed(params)) chain->add<ProcedureGeneration>(params);
-  if (params.has("dflt_start") || params.has("dflt_end")) chain->add<DefaultPositions>(params);
   if (params.numeric("eps_line") > 0) chain->add<ShortLineFilter>(params.numeric("eps_line"));
   // Always there: even a machine that takes every arc is not sent one that is no arc (check_circle).
   chain->add<ArcFilter>(ArcSettings::from(params), warn);

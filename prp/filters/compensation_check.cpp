@@ -10,9 +10,18 @@ bool CompensationCheck::needed(const MachineParameters& params) {
   return params.has("min_delt_arc_rad") && params.logical("comp_exist") && !params.logical("comp_by_zero_tool");
 }
 
-bool CompensationCheck::next_with_kind(toolpath::Command& out, CommandKind& kind) {
-  if (!input_.next(out, kind)) return false;
-  if (!out.is_stream_command()) return true;
+namespace {
+
+constexpr KindSet kFollowed =
+    bit(CommandKind::change_tool) | bit(CommandKind::turn_change_tool) | bit(CommandKind::compensation);
+
+}  // namespace
+
+// Arcs only while there is something to check them against.
+CompensationCheck::CompensationCheck(double margin, WarningSink warn)
+    : CommandStep(kFollowed), margin_(margin), warn_(std::move(warn)) {}
+
+void CompensationCheck::apply(toolpath::Command& out, CommandKind& kind) {
   if (kind == CommandKind::change_tool || kind == CommandKind::turn_change_tool) {
     if (auto d = number(out, "tool_diameter")) tool_radius_ = *d / 2;
     else if (auto r = number(out, "tool_radius")) tool_radius_ = *r;
@@ -30,7 +39,7 @@ bool CompensationCheck::next_with_kind(toolpath::Command& out, CommandKind& kind
                              "side ({})",
                              *radius, *tool_radius_, margin_, side_));
   }
-  return true;
+  kinds_ = !side_.empty() && tool_radius_ ? kFollowed | bit(CommandKind::arc) : kFollowed;
 }
 
 }  // namespace prp

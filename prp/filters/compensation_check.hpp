@@ -8,20 +8,18 @@
 #include <optional>
 #include <string>
 
-#include "prp/filters/kind_source.hpp"
+#include "prp/filters/command_step.hpp"
 #include "prp/prp.hpp"
 
 namespace prp {
 
-class CompensationCheck final : public KindSource {
+class CompensationCheck final : public CommandStep {
 public:
-  CompensationCheck(toolpath::CommandSource& input, double margin, WarningSink warn)
-      : input_(input), margin_(margin), warn_(std::move(warn)) {}
-  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
+  CompensationCheck(double margin, WarningSink warn);
+  void apply(toolpath::Command& c, CommandKind& kind) override;
   static bool needed(const MachineParameters& params);
 
 private:
-  KindedInput input_;
   double margin_;
   WarningSink warn_;
   std::optional<double> tool_radius_;

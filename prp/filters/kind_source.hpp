@@ -15,6 +15,8 @@
 
 namespace prp {
 
+struct CommandFields;
+
 class KindSource : public toolpath::CommandSource {
 public:
   // As next(out), and sets `kind` to command_kind(out) for the command handed out.
@@ -23,6 +25,12 @@ public:
     CommandKind kind;
     return next_with_kind(out, kind);
   }
+  // The fields of the command handed out last, when this source found them for it (else null).
+  // They hold while that command's parameter list keeps its length and order.
+  const CommandFields* fields() const { return fields_; }
+
+protected:
+  const CommandFields* fields_ = nullptr;
 };
 
 // A filter's input: a KindSource tells the kind; the commands of any other source (the trace
@@ -37,6 +45,7 @@ public:
     kind = memo_(out.name);
     return true;
   }
+  const CommandFields* fields() const { return kinded_ ? kinded_->fields() : nullptr; }
 
 private:
   toolpath::CommandSource& source_;

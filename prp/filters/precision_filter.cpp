@@ -1,6 +1,7 @@
 #include "prp/filters/precision_filter.hpp"
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -11,17 +12,11 @@
 namespace prp {
 namespace {
 
-using toolpath::ParamKey;
-
-// The parameters the filter touches: lengths (rounded with the coordinates; the first three are the
-// tool position), then the feed and the spindle speed.
-constexpr ParamKey kKeys[] = {ParamKey::xpos,          ParamKey::ypos,          ParamKey::zpos,
-                              ParamKey::xcenter,       ParamKey::ycenter,       ParamKey::xcenter_rel,
-                              ParamKey::ycenter_rel,   ParamKey::radius,        ParamKey::zstart,
-                              ParamKey::drill_upper_z, ParamKey::drill_lower_z, ParamKey::drill_clearance_z,
-                              ParamKey::drill_depth,   ParamKey::down_step,     ParamKey::feed,
-                              ParamKey::spin};
-constexpr int kFeed = 14, kSpin = 15;
+// The parameters the filter touches are the first CommandFields: lengths (rounded with the
+// coordinates; the first three are the tool position), then the feed and the spindle speed.
+using F = CommandFields;
+constexpr int kFeed = F::feed, kSpin = F::spin, kParameters = kSpin + 1;
+static_assert(F::xpos == 0 && F::ypos == 1 && F::zpos == 2, "the tool position comes first");
 
 std::optional<DecimalGrid> grid_of(const std::optional<int>& digits) {
   if (!digits) return std::nullopt;
@@ -84,47 +79,55 @@ PrecisionFilter::PrecisionFilter(toolpath::CommandSource& input, PrecisionSettin
       feed_(grid_of(s_.feed_digits)),
       spin_(grid_of(s_.spin_digits)),
       whole_stays_(!s_.every_value_in_full && s_.zero_value <= 1.0) {
-  index_.fill(-1);
-  for (int k = 0; k < static_cast<int>(std::size(kKeys)); ++k) {
+  for (int k = 0; k < kParameters; ++k) {
     zero_of_[k] = k < kFeed ? s_.zero_value : 0.0;
     const auto& grid = k < kFeed ? movement_ : k == kFeed ? feed_ : spin_;
     grid_of_[k] = grid ? &*grid : nullptr;
     // adjust() changes nothing, and follows no axis, for a parameter that neither snaps nor rounds.
-    if (zero_of_[k] > 0 || grid_of_[k]) index_[static_cast<std::size_t>(kKeys[k])] = static_cast<std::int8_t>(k);
+    if (zero_of_[k] > 0 || grid_of_[k]) active_ |= std::uint32_t{1} << k;
     whole_limit_of_[k] = whole_stays_ && grid_of_[k] ? grid_of_[k]->whole_limit() : -1.0;
   }
   for (double& axis : sent_) axis = std::numeric_limits<double>::quiet_NaN();
+  for (double& value : kept_) value = std::numeric_limits<double>::quiet_NaN();
 }
 
 // True when adjust() would leave x as it is. Each test is false for zero_value <= 0 and for an
-// unknown (NaN) axis, as adjust() would skip them.
-inline bool PrecisionFilter::leaves(double x, int k, bool axis) const {
+// unknown (NaN) axis, as adjust() would skip them. A fraction equal to the last one the tests
+// kept for this parameter (kept_: a contour's depth, an arc's radius) skips them: they give the
+// same for equal values (NaN equals none; -0 and +0 fare alike).
+inline bool PrecisionFilter::leaves(double x, int k, bool axis) {
   // A whole number is at least 1 from 0, so it snaps to 0 only for a zero_value above 1.
-  if (!DecimalGrid::whole_within(x, whole_limit_of_[k])) {
+  if (!DecimalGrid::whole_within(x, whole_limit_of_[k]) && x != kept_[k]) {
     if (s_.every_value_in_full || (std::abs(x) < zero_of_[k] && x != 0.0)) return false;
     // With whole_stays_, x is known to be off the grid's whole-number shortcut.
     const DecimalGrid* grid = grid_of_[k];
     if (grid && !(whole_stays_ ? grid->round_general(x) == x : grid->keeps(x))) return false;
+    kept_[k] = x;
   }
   return !(axis && std::abs(x - sent_[k]) < s_.zero_value && x != sent_[k]);
 }
 
-// One pass over the parameters. Most values are already at the precision and far from zero and
-// from the axis they move on: telling that takes a few comparisons and at most one rounding, and
-// such a value is left as it is; any other goes through adjust(), the steps as spec 3.1 orders them.
+// Most values are already at the precision and far from zero and from the axis they move on:
+// telling that takes a few comparisons and at most one rounding, and such a value is left as it
+// is; any other goes through adjust(), the steps as spec 3.1 orders them. Each parameter is the
+// first of its name (as Command::find finds it), read from the fields the arc filter before this
+// one found, or found here in one pass; the parameters are independent, so their order is not
+// the command's.
 bool PrecisionFilter::next_with_kind(toolpath::Command& out, CommandKind& kind) {
   if (!input_.next(out, kind)) return false;
   if (!out.is_stream_command()) return true;
+  const CommandFields* fields = input_.fields();
+  if (!fields) {
+    own_fields_.find(out);
+    fields = &own_fields_;
+  }
   const int axes = has(kMovesTool, kind) ? 3 : 0;  // parameters below this are axes the tool moves on
-  unsigned seen = 0;  // a name given twice: only its first occurrence counts, as with Command::find
-  for (toolpath::Parameter& p : out.parameters) {
-    const int k = index_[static_cast<std::size_t>(p.key)];
-    if (k < 0 || (seen & (1u << k))) continue;
-    seen |= 1u << k;
-    toolpath::Value& v = p.value;
-    if (!is_number(v)) continue;
-    const double x = number_of(v);
-    if (!leaves(x, k, k < axes)) adjust(v, k, axes != 0);
+  for (std::uint32_t todo = fields->present & active_; todo != 0; todo &= todo - 1) {
+    const int k = std::countr_zero(todo);
+    toolpath::Value* v = fields->slots[k];
+    if (!is_number(*v)) continue;
+    const double x = number_of(*v);
+    if (!leaves(x, k, k < axes)) adjust(*v, k, axes != 0);
     else if (k < axes) sent_[k] = x;
   }
   return true;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "prp/filters/command_fields.hpp"
 #include "prp/filters/kind_source.hpp"
 #include "prp/prp.hpp"
 
@@ -62,16 +63,16 @@ public:
   bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
 
 private:
-  bool leaves(double x, int k, bool axis) const;
+  bool leaves(double x, int k, bool axis);  // remembers a fraction that passes (kept_)
   void adjust(toolpath::Value& v, int k, bool moves);  // the steps of spec 3.1, one by one
 
   KindedInput input_;
   PrecisionSettings s_;
   std::optional<DecimalGrid> movement_, feed_, spin_;
-  // Which of the filter's parameters a key is (-1: a parameter the settings leave alone, such as
-  // the feed without feed_precision), then per parameter the zero_value it snaps with (0 for the
-  // feed and the spindle speed: never), and its grid (null: no rounding).
-  std::array<std::int8_t, toolpath::param_key_count + 1> index_;
+  // The filter's parameters (CommandFields, the first 16) that the settings snap or round, then
+  // per parameter the zero_value it snaps with (0 for the feed and the spindle speed: never), and
+  // its grid (null: no rounding).
+  std::uint32_t active_ = 0;  // bit k: parameter k
   double zero_of_[16];
   const DecimalGrid* grid_of_[16];
   // A whole number on its grid never snaps (zero_value <= 1), nor rounds: per parameter the largest
@@ -79,6 +80,8 @@ private:
   bool whole_stays_;
   double whole_limit_of_[16];
   double sent_[3];  // where the tool is sent, axis by axis; NaN while unknown (it never snaps to it)
+  double kept_[16];  // per parameter, the last fraction it left as it was (NaN: none; never with every_value_in_full)
+  CommandFields own_fields_;  // when the input hands on none
 };
 
 }  // namespace prp

@@ -95,7 +95,9 @@ std::optional<JobForecast> ProcedureGeneration::forecast(toolpath::CommandSource
 }
 
 bool ProcedureGeneration::next_with_kind(toolpath::Command& out, CommandKind& kind) {
-  if (phase_ == Phase::PassThrough && !main_ && !has_held_) return input_.next(out, kind);
+  // The phases that last: a structured toolpath passing through, the bodies of two passes.
+  if (phase_ == Phase::Through) return input_.next(out, kind);
+  if (phase_ == Phase::Live) return next_live(out, kind);
   return produce(out, kind);
 }
 
@@ -111,8 +113,10 @@ bool ProcedureGeneration::produce(toolpath::Command& out, CommandKind& kind) {
         kind = command_kind(out);
         return true;
       }
+      phase_ = Phase::Through;
       return input_.next(out, kind);
     }
+    case Phase::Through: return input_.next(out, kind);
     case Phase::Main: return next_main(out, kind);
     case Phase::Body: return next_body(out, kind);
     case Phase::Points: return next_points(out, kind);

@@ -65,7 +65,8 @@ private:
     std::int64_t points_offset = 0;  // first @drill_point in the body spool
     std::optional<std::int64_t> label;  // of the shared point list it calls
   };
-  enum class Phase { Collect, PassThrough, Main, Body, Points, Live, Done };
+  // PassThrough hands on what collect() read, then Through the rest of a structured toolpath.
+  enum class Phase { Collect, PassThrough, Through, Main, Body, Points, Live, Done };
   friend class JobForecast;
 
   // Each of these hands out a command and its kind: the spools keep the kinds of the commands they

@@ -20,19 +20,16 @@ constexpr KindSet kFiveAxisCuts = bit(K::line_5x) | bit(K::arc_5x);
 
 }  // namespace
 
-RotaryAxes::RotaryAxes(toolpath::CommandSource& input, const MachineParameters& params, WarningSink warn)
-    : input_(input),
+RotaryAxes::RotaryAxes(const MachineParameters& params, WarningSink warn)
+    : CommandStep(kFourAxis | kFiveAxisCuts | bit(K::move_5x)),
       warn_(std::move(warn)),
       set_dir_(params.logical("set_dir")),
       positive_only_(params.logical("positive_4x_dir_only")),
       angle_limit_(params.numeric("angle_change_limit")) {}
 
-bool RotaryAxes::next_with_kind(toolpath::Command& out, CommandKind& kind) {
-  if (!input_.next(out, kind)) return false;
-  if (!out.is_stream_command()) return true;
-  if (has(kFourAxis, kind)) four_axis(out, kind);
-  else if (has(kFiveAxisCuts, kind) || kind == K::move_5x) five_axis(out, kind);
-  return true;
+void RotaryAxes::apply(toolpath::Command& c, CommandKind& kind) {
+  if (has(kFourAxis, kind)) four_axis(c, kind);
+  else five_axis(c, kind);
 }
 
 void RotaryAxes::warn_once(const toolpath::Command& c, const std::string& key, const std::string& message) {

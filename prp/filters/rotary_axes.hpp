@@ -14,22 +14,21 @@
 #include <set>
 #include <string>
 
-#include "prp/filters/kind_source.hpp"
+#include "prp/filters/command_step.hpp"
 #include "prp/prp.hpp"
 
 namespace prp {
 
-class RotaryAxes final : public KindSource {
+class RotaryAxes final : public CommandStep {
 public:
-  RotaryAxes(toolpath::CommandSource& input, const MachineParameters& params, WarningSink warn);
-  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
+  RotaryAxes(const MachineParameters& params, WarningSink warn);
+  void apply(toolpath::Command& c, CommandKind& kind) override;
 
 private:
   void four_axis(toolpath::Command& c, CommandKind& kind);
   void five_axis(const toolpath::Command& c, CommandKind kind);
   void warn_once(const toolpath::Command& c, const std::string& key, const std::string& message);
 
-  KindedInput input_;
   WarningSink warn_;
   bool set_dir_, positive_only_;
   double angle_limit_;

@@ -6,8 +6,19 @@
 
 namespace prp {
 
-StructureCheck::StructureCheck(toolpath::CommandSource& input, const MachineParameters& p, WarningSink warn)
-    : input_(input),
+namespace {
+
+using K = CommandKind;
+// The only commands check() looks at.
+constexpr KindSet kChecked = bit(K::call_proc) | bit(K::call_prms) | bit(K::loop) | bit(K::rotate) | bit(K::mirror) |
+                             bit(K::change_ref_point) | bit(K::compensation) | bit(K::proc) |
+                             bit(K::start_of_file) | bit(K::home_number) | bit(K::turning) | bit(K::groove);
+
+}  // namespace
+
+// With the tool changes (@change_tool, and @start_tool among the others) that may lack a direction.
+StructureCheck::StructureCheck(const MachineParameters& p, WarningSink warn)
+    : CommandStep(kChecked | bit(K::change_tool) | bit(K::other)),
       warn_(std::move(warn)),
       gen_procs_(p.text("gen_procs")),
       procs_off_(toolpath::iequals(gen_procs_, "N")),
@@ -25,25 +36,13 @@ StructureCheck::StructureCheck(toolpath::CommandSource& input, const MachinePara
   if (p.has("num_homes")) num_homes_ = p.integer("num_homes");
 }
 
-namespace {
-
-using K = CommandKind;
-// The only commands check() looks at.
-constexpr KindSet kChecked = bit(K::call_proc) | bit(K::call_prms) | bit(K::loop) | bit(K::rotate) | bit(K::mirror) |
-                             bit(K::change_ref_point) | bit(K::compensation) | bit(K::proc) |
-                             bit(K::start_of_file) | bit(K::home_number) | bit(K::turning) | bit(K::groove);
-
-}  // namespace
-
-bool StructureCheck::next_with_kind(toolpath::Command& out, CommandKind& kind) {
-  if (!input_.next(out, kind)) return false;
-  if (has(kChecked, kind) && out.is_stream_command()) check(out, kind);
+void StructureCheck::apply(toolpath::Command& c, CommandKind& kind) {
+  if (has(kChecked, kind)) check(c, kind);
   // SolidCAM always says which way the tool turns; a hand-made job that does not (the manual's
   // example job) means the usual CW, which posts test with `tool_direction eq CW`.
-  if ((kind == K::change_tool || (kind == K::other && toolpath::iequals(out.name, "@start_tool"))) &&
-      out.is_stream_command() && !out.find(toolpath::ParamKey::tool_direction))
-    out.set(toolpath::ParamKey::tool_direction, toolpath::Value::make_enum("CW"));
-  return true;
+  if ((kind == K::change_tool || (kind == K::other && toolpath::iequals(c.name, "@start_tool"))) &&
+      !c.find(toolpath::ParamKey::tool_direction))
+    c.set(toolpath::ParamKey::tool_direction, toolpath::Value::make_enum("CW"));
 }
 
 void StructureCheck::check(const toolpath::Command& c, CommandKind kind) {
@@ -103,19 +102,16 @@ void StructureCheck::check(const toolpath::Command& c, CommandKind kind) {
   }
 }
 
-DefaultPositions::DefaultPositions(toolpath::CommandSource& input, const MachineParameters& p) : input_(input) {
+DefaultPositions::DefaultPositions(const MachineParameters& p)
+    : CommandStep(bit(CommandKind::start_program) | bit(CommandKind::end_program)) {
   if (p.has("dflt_start")) start_ = p.point("dflt_start");
   if (p.has("dflt_end")) end_ = p.point("dflt_end");
 }
 
-bool DefaultPositions::next_with_kind(toolpath::Command& out, CommandKind& kind) {
-  if (!input_.next(out, kind)) return false;
-  if (kind != CommandKind::start_program && kind != CommandKind::end_program) return true;
-  if (!out.is_stream_command()) return true;
-  if (out.find("xpos") || out.find("ypos") || out.find("zpos")) return true;
-  if (start_ && kind == CommandKind::start_program) set_point(out, *start_);
-  if (end_ && kind == CommandKind::end_program) set_point(out, *end_);
-  return true;
+void DefaultPositions::apply(toolpath::Command& c, CommandKind& kind) {
+  if (c.find("xpos") || c.find("ypos") || c.find("zpos")) return;
+  if (start_ && kind == CommandKind::start_program) set_point(c, *start_);
+  if (end_ && kind == CommandKind::end_program) set_point(c, *end_);
 }
 
 }  // namespace prp

@@ -8,20 +8,20 @@
 #include <set>
 #include <string>
 
+#include "prp/filters/command_step.hpp"
 #include "prp/filters/kind_source.hpp"
 #include "prp/prp.hpp"
 
 namespace prp {
 
-class StructureCheck final : public KindSource {
+class StructureCheck final : public CommandStep {
 public:
-  StructureCheck(toolpath::CommandSource& input, const MachineParameters& params, WarningSink warn);
-  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
+  StructureCheck(const MachineParameters& params, WarningSink warn);
+  void apply(toolpath::Command& c, CommandKind& kind) override;
 
 private:
   void check(const toolpath::Command& c, CommandKind kind);
 
-  KindedInput input_;
   WarningSink warn_;
   std::string gen_procs_;
   bool procs_off_, calls_with_parameters_;  // gen_procs N, D
@@ -32,14 +32,14 @@ private:
 };
 
 // Fills the program's start and end positions from dflt_start / dflt_end (spec 3.8) when the
-// toolpath does not give them: @start_program and @end_program without xpos, ypos and zpos.
-class DefaultPositions final : public KindSource {
+// toolpath does not give them: @start_program and @end_program without xpos, ypos and zpos. It
+// looks at nothing but the command, so it may run before procedure generation moves commands.
+class DefaultPositions final : public CommandStep {
 public:
-  DefaultPositions(toolpath::CommandSource& input, const MachineParameters& params);
-  bool next_with_kind(toolpath::Command& out, CommandKind& kind) override;
+  explicit DefaultPositions(const MachineParameters& params);
+  void apply(toolpath::Command& c, CommandKind& kind) override;
 
 private:
-  KindedInput input_;
   std::optional<Eigen::Vector3d> start_, end_;
 };
 

@@ -79,7 +79,7 @@ TEST(KindSource, KindsTravelDownAChainOfFilters) {
   auto params = prp::load_source("@pre_processor\ngen_procs = Y\nproc_num_dflt = 7\nendp\n", "k.prp",
                                  prp::Units::Metric);
   ListSource source(arcs_job());
-  prp::StructureCheck check(source, params, {});
+  prp::StepFilter<prp::StructureCheck> check(source, params, prp::WarningSink{});
   prp::ProcedureGeneration procedures(check, params);
   prp::ArcSettings arcs;
   arcs.quadrants = true;

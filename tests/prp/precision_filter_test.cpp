@@ -186,3 +186,45 @@ TEST(PrecisionFilter, ShortcutGivesTheFullStepsResults) {
 }
 
 }  // namespace
+
+namespace {
+
+// A fraction that passed the tests passes again at once when its parameter repeats it (kept_):
+// streams drawn from a few values, on and off the grids, near zero_value, -0 and NaN, repeated
+// parameter after parameter and command after command, give what working out every value gives.
+TEST(PrecisionFilter, RepeatedFractionsGiveTheFullStepsResults) {
+  std::mt19937_64 rng(41);
+  const double pool[] = {-0.5,   0.5,   2.1234, 2.123,  -0.0004, 0.0004, 0.001, -0.0, 0.0, 5.0,
+                         2.5,    1e-300, 0.49,  -1.5,   10.0005, 10.001, 1e16 + 2, std::nan("")};
+  const char* names[] = {"xpos", "ypos", "zpos", "radius", "feed", "spin", "zstart"};
+  const char* commands[] = {"@line", "@arc", "@message", "@rapid_move"};
+  for (int round = 0; round < 300; ++round) {
+    prp::PrecisionSettings s;
+    s.zero_value = std::vector<double>{0.0, 0.001, 0.5, 2.0}[rng() % 4];
+    if (rng() % 4) s.movement_digits = static_cast<int>(rng() % 5);
+    if (rng() % 2) s.feed_digits = static_cast<int>(rng() % 3) - 1;
+    if (rng() % 2) s.spin_digits = static_cast<int>(rng() % 3) - 1;
+    std::vector<toolpath::Command> in;
+    for (int i = 0; i < 60; ++i) {
+      toolpath::Command c;
+      c.name = commands[rng() % std::size(commands)];
+      for (int j = static_cast<int>(rng() % 6); j > 0; --j)
+        c.parameters.push_back({names[rng() % std::size(names)], num(pool[rng() % (rng() % 3 ? 4 : std::size(pool))])});
+      in.push_back(std::move(c));
+    }
+    ListSource fast_in(in), full_in(in);
+    prp::PrecisionFilter fast(fast_in, s);
+    s.every_value_in_full = true;
+    prp::PrecisionFilter full(full_in, s);
+    const auto a = drain(fast), b = drain(full);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i)
+      for (std::size_t j = 0; j < a[i].parameters.size(); ++j) {
+        const toolpath::Value &x = a[i].parameters[j].value, &y = b[i].parameters[j].value;
+        ASSERT_EQ(x.kind, y.kind);
+        ASSERT_EQ(bits_of(x.numeric), bits_of(y.numeric)) << round << " " << i << " " << a[i].parameters[j].name;
+      }
+  }
+}
+
+}  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "prp/filters/procedure_generation.hpp"
+#include "prp/filters/structure_check.hpp"
 #include "stream_helpers.hpp"
 
 using namespace prp_test;
@@ -365,6 +366,46 @@ TEST(GenerationInTwoPasses, RandomToolpaths) {
     ASSERT_TRUE(*two == one_pass(s, in)) << "round " << round;
   }
   EXPECT_GT(forecast, 1000);  // most of them are done in two passes
+}
+
+// Default positions look at nothing but the command they fill, so the chain runs them before
+// procedure generation (in one layer with the checks): on random flat toolpaths with @start_program
+// and @end_program, with and without a position, in and between jobs, both orders give the same.
+TEST(ProcedureGeneration, DefaultPositionsBeforeOrAfterGiveTheSame) {
+  const char* settings[] = {"gen_procs = Y\ndrill_proc = Y\n", "gen_procs = C\ndrill_proc = Y\n"};
+  std::mt19937 rng(28);
+  for (int round = 0; round < 1000; ++round) {
+    std::vector<Command> in;
+    for (Command& c : random_toolpath(rng)) {
+      in.push_back(std::move(c));
+      if (rng() % 6 == 0) {
+        Command program = command(rng() % 2 ? "@start_program" : "@END_PROGRAM", {});
+        if (rng() % 2) program.set("zpos", num(5));
+        in.push_back(std::move(program));
+      }
+    }
+    in = numbered(std::move(in));
+    auto params = machine(std::string(settings[round % 2]) + "dflt_start = 1 2 3, 0.1 0.2 0.3\ndflt_end = 4 5 6, 0.4 0.5 0.6\n");
+    ListSource after_in(in), before_in(in);
+    prp::ProcedureGeneration after_generation(after_in, params);
+    prp::StepFilter<prp::DefaultPositions> after(after_generation, params);
+    prp::StepFilter<prp::DefaultPositions> before(before_in, params);
+    prp::ProcedureGeneration before_generation(before, params);
+    std::string after_error, before_error;
+    std::vector<Command> a, b;
+    try {
+      a = drain(after);
+    } catch (const prp::StreamError& e) {
+      after_error = e.what();
+    }
+    try {
+      b = drain(before_generation);
+    } catch (const prp::StreamError& e) {
+      before_error = e.what();
+    }
+    ASSERT_EQ(after_error, before_error) << round;
+    ASSERT_TRUE(a == b) << round;
+  }
 }
 
 // A job that differs from its forecast outside the bodies stops the second pass; inside a body

@@ -18,7 +18,7 @@ Run run(const char* settings, std::vector<toolpath::Command> in) {
   auto params = prp::load_source(std::string("@pre_processor\n") + settings + "endp\n", "r.prp", prp::Units::Metric);
   ListSource source(std::move(in));
   Run r;
-  prp::RotaryAxes filter(source, params, [&](const toolpath::Command& c, const std::string& m) {
+  prp::StepFilter<prp::RotaryAxes> filter(source, params, [&](const toolpath::Command& c, const std::string& m) {
     r.warnings.push_back(c.name + ": " + m);
   });
   r.out = drain(filter);

@@ -120,7 +120,7 @@ TEST(CompensationCheck, ConcaveArcsBelowToolRadiusPlusMargin) {
                      arc("CCW", 6), command("@compensation", {{"side", word("COMP_RIGHT")}}), arc("CW", 4),
                      arc("CCW", 4), command("@compensation", {{"side", word("COMP_OFF")}}), arc("CCW", 1)});
   Warnings w;
-  prp::CompensationCheck filter(source, 0.01, w.sink());
+  prp::StepFilter<prp::CompensationCheck> filter(source, 0.01, w.sink());
   EXPECT_EQ(drain(filter).size(), 10u);
   EXPECT_EQ(w.got, (std::vector<std::string>{
                        "@arc: arc radius 5.005 is below tool radius 5 + min_delt_arc_rad 0.01 on the compensated side (COMP_LEFT)",

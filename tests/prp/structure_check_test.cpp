@@ -19,7 +19,7 @@ std::vector<std::string> warnings_for(std::vector<toolpath::Command> in) {
   auto params = prp::load_source(kPrp, "s.prp", prp::Units::Metric);
   ListSource source(std::move(in));
   std::vector<std::string> got;
-  prp::StructureCheck check(source, params, [&](const toolpath::Command& c, const std::string& m) {
+  prp::StepFilter<prp::StructureCheck> check(source, params, [&](const toolpath::Command& c, const std::string& m) {
     got.push_back(c.name + ": " + m);
   });
   drain(check);
@@ -62,7 +62,7 @@ TEST(StructureCheck, AToolWithoutItsDirectionTurnsClockwise) {
   ListSource source({command("@change_tool", {{"tool_number", num(1)}}),
                      command("@change_tool", {{"tool_number", num(2)}, {"tool_direction", word("CCW")}}),
                      command("@start_tool", {{"spin", num(100)}})});
-  prp::StructureCheck check(source, params, nullptr);
+  prp::StepFilter<prp::StructureCheck> check(source, params, nullptr);
   std::vector<std::string> directions;
   for (const auto& c : drain(check)) directions.push_back(c.find("tool_direction") ? c.find("tool_direction")->text : "-");
   EXPECT_EQ(directions, (std::vector<std::string>{"CW", "CCW", "CW"}));
@@ -80,7 +80,7 @@ TEST(DefaultPositions, FillsOnlyWhatTheToolpathLeavesOpen) {
     auto params = prp::load_source(kPrp, "s.prp", units);
     ListSource source({command("@start_program", {}), command("@start_program", {{"xpos", num(1)}}),
                        command("@end_program", {})});
-    prp::DefaultPositions filter(source, params);
+    prp::StepFilter<prp::DefaultPositions> filter(source, params);
     auto out = drain(filter);
     EXPECT_EQ(get(out[0], "ypos"), units == prp::Units::Metric ? 200 : 7.874);
     EXPECT_EQ(get(out[0], "zpos"), units == prp::Units::Metric ? 100 : 3.937);
