@@ -105,12 +105,15 @@ std::size_t user_value_end(std::string_view text, std::size_t v) {
 // '\n' and knows the end; the reader's fast path does not, and takes a '\n' (or "\r\n", as
 // read_line strips the '\r') where a value or the blanks after it end for the line end: no name,
 // number, word or blank the run reads holds one, so the run never steps over it.
+// The fast path remembers numbers (NumberMemo); the general rule reads every one afresh.
 struct KnownEnd {
+  static constexpr bool kRemembers = false;
   const char* end;
   bool at(const char* k) const { return k == end; }
   const char* bound() const { return end; }  // the names compared lie below it
 };
 struct NewlineEnd {
+  static constexpr bool kRemembers = true;
   const char* chunk_end;  // the string's '\0' there stops every scan
   bool at(const char* k) const { return *k == '\n' || (*k == '\r' && k[1] == '\n'); }
   const char* bound() const { return chunk_end; }
@@ -124,9 +127,10 @@ struct NewlineEnd {
 // the general loop reads it again from its name and stores it over (or throws). Returns where the
 // run stopped: the end of the line (end.at() holds) when it read everything; `used` counts the
 // slots filled. A value's column is column_base plus its address (below 2^32: see kMaxLine).
+// `memos`: the numbers last read, one per key (NumberMemo), when End remembers them.
 template <class End>
 [[gnu::always_inline]] inline const char* run_pairs(Command& out, std::size_t& used, const char* q, End end,
-                                                    std::uintptr_t column_base, std::uint32_t line) {
+                                                    std::uintptr_t column_base, std::uint32_t line, NumberMemo* memos) {
   Parameter* p = out.parameters.data() + used;
   Parameter* const last = out.parameters.data() + out.parameters.size();
   const char* v = p < last ? slot_value(*p, q, end.bound()) : nullptr;
@@ -136,11 +140,22 @@ template <class End>
     p->line = line;
     p->column = static_cast<std::uint32_t>(column_base + reinterpret_cast<std::uintptr_t>(v));
     const char* k;  // where the value ends
-    if (const NumberScan number = scan_terminated_number(v); number.length > 0) {
+    NumberMemo* memo = nullptr;
+    bool recalled = false;
+    if constexpr (End::kRemembers) {
+      memo = memos + static_cast<std::size_t>(p->key);
+      if (memo->holds(v, end.bound())) {
+        k = memo->recall(v, p->value);
+        recalled = true;
+      }
+    }
+    if (recalled) {
+    } else if (const NumberScan number = scan_terminated_number(v); number.length > 0) {
       k = v + number.length;
       const ChangeFlag flag = flag_letter(*k);
       k += flag != ChangeFlag::None;
       if (!store_exact_number(p->value, number, flag)) break;
+      if constexpr (End::kRemembers) memo->keep(v, k, end.bound(), p->value);
     } else if (is_ident_start(*v)) {
       k = v + 1;
       while (is_ident_char(*k)) ++k;
@@ -175,7 +190,8 @@ template <class End>
                                                        std::size_t column, std::uint32_t line) {
   const char* const start = text.data();
   const std::uintptr_t column_base = column - reinterpret_cast<std::uintptr_t>(start);
-  return static_cast<std::size_t>(run_pairs(out, used, start + at, KnownEnd{start + text.size()}, column_base, line) - start);
+  return static_cast<std::size_t>(run_pairs(out, used, start + at, KnownEnd{start + text.size()}, column_base, line, nullptr) -
+                                  start);
 }
 
 }  // namespace
@@ -235,7 +251,7 @@ std::size_t TraceReader::fast_lines(Command& out, const char* p, const char* lin
   for (;;) {
     p = skip_terminated_blanks(p, end.chunk_end);
     if (!end.at(p)) {
-      p = run_pairs(out, used, p, end, 1 - reinterpret_cast<std::uintptr_t>(line), next_line32());
+      p = run_pairs(out, used, p, end, 1 - reinterpret_cast<std::uintptr_t>(line), next_line32(), memos_.get());
       if (!end.at(p)) return taken;
     }
     used_parameters_ = used;

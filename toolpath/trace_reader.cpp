@@ -55,7 +55,8 @@ bool is_skimmed_motion(std::string_view n) {
 
 }  // namespace
 
-TraceReader::TraceReader(std::istream& in, std::string file_name) : in_(in), file_(std::move(file_name)) {}
+TraceReader::TraceReader(std::istream& in, std::string file_name)
+    : in_(in), file_(std::move(file_name)), memos_(std::make_unique<NumberMemo[]>(param_key_count + 1)) {}
 
 TraceReader::~TraceReader() = default;
 

@@ -18,6 +18,10 @@
 
 namespace toolpath {
 
+namespace trace_syntax {
+struct NumberMemo;
+}
+
 // Parses one value as it appears after `name :` (`'text'`, `12`, `1.5T`, `TRUE`, `CW`, or free text).
 // Throws InputError at `where` (column advanced to the fault) when the text is malformed.
 Value parse_value(std::string_view text, const SourcePosition& where);
@@ -102,6 +106,7 @@ private:
   bool in_job_ = false;
   bool job_leading_ = false;     // only tool changes since the job's @start_of_job
   ParameterShelf shelf_;
+  std::unique_ptr<trace_syntax::NumberMemo[]> memos_;  // the fast path's numbers, one per key
   std::atomic<std::uintmax_t> bytes_read_{0};
 };
 
