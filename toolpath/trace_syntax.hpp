@@ -14,6 +14,7 @@
 #include "toolpath/command.hpp"
 #include "toolpath/error.hpp"
 #include "toolpath/short_text.hpp"
+#include "toolpath/trace_reader.hpp"
 #include "toolpath/value.hpp"
 
 namespace toolpath::trace_syntax {
@@ -252,13 +253,14 @@ inline bool store_exact_number(Value& out, const NumberScan& n, ChangeFlag flag)
   return true;
 }
 
-// The number a keyed parameter's value last was, as text, and what it gave (the reader's fast
-// path, trace_pairs.cpp): SolidCAM writes every parameter of a command each time, most of them
-// unchanged, so the same bytes come back and need no scan and conversion. A number's value
-// depends on its bytes only, so bytes that match give what the scan would give. The entry keeps
-// its own copy of both, never the slot's Value: the filters round values in place, and slots
-// travel between commands.
-struct NumberMemo {
+// What the reader's fast path keeps per key (trace_pairs.cpp): the consumer's screen, and the
+// number the key's value last was, as text, with what it gave. SolidCAM writes every parameter of
+// a command each time, most of them unchanged, so the same bytes come back and need no scan and
+// conversion. A number's value depends on its bytes only, so bytes that match give what the scan
+// would give, and pass the key's screen as they did. The entry keeps its own copy of the value,
+// never the slot's Value: the filters round values in place, and slots travel between commands.
+struct alignas(64) KeyMemo {  // one line each, found by a shift
+  ValueScreen screen;
   // The number and its flag letter, in the bytes of `mask` (little-endian); none when `text` is 0
   // (a value's first byte is never 0) and `mask` all ones.
   std::uint64_t text = 0;
@@ -267,6 +269,7 @@ struct NumberMemo {
   std::uint8_t size = 0;   // the bytes of the number and its flag
   ValueKind kind = ValueKind::Integer;
   ChangeFlag flag = ChangeFlag::None;
+  bool passed = false;  // the kept value passes `screen`
   // A parameter whose value changes every time (a coordinate along a contour) would pay for the
   // comparison and the copy each time: after a few misses in a row it rests for a while.
   std::uint8_t misses = 0;  // in a row
@@ -296,8 +299,8 @@ struct NumberMemo {
     return v + size;
   }
   // Keeps `value`, just stored from the number (and flag) from `v` to `end` as the kept one did
-  // not hold, when it fits and the entry is not resting.
-  [[gnu::always_inline]] void keep(const char* v, const char* end, const char* bound, const Value& value) {
+  // not hold, when it fits and the entry is not resting; `passes`: whether it passes `screen`.
+  [[gnu::always_inline]] void keep(const char* v, const char* end, const char* bound, const Value& value, bool passes) {
     if constexpr (std::endian::native != std::endian::little) return;
     if (rest != 0) return void(--rest);
     if (text != 0 && ++misses == kMissesBeforeRest) {
@@ -314,6 +317,7 @@ struct NumberMemo {
     size = static_cast<std::uint8_t>(n);
     kind = value.kind;
     flag = value.flag;
+    passed = passes;
     if (kind == ValueKind::Integer) bits = static_cast<std::uint64_t>(value.integer);
     else std::memcpy(&bits, &value.numeric, sizeof bits);
   }

@@ -187,7 +187,7 @@ TEST(TraceReaderFastLines, MutatedLayoutExample) {
   }
 }
 
-// The fast path remembers each key's last number (trace_syntax::NumberMemo) and takes the same
+// The fast path remembers each key's last number (trace_syntax::KeyMemo) and takes the same
 // bytes again without scanning them. Numbers that share the remembered bytes and go on past them
 // (`1.5` then `1.55`, `1.5e3`, `1.5T`, `1.5x`), flags, numbers too long to be remembered, words,
 // and each kind of line end, in jobs where every key takes few values; read with the values
@@ -237,6 +237,44 @@ TEST(TraceReaderFastLines, RepeatedNumbersAtTheEndOfAChunk) {
     check(text);
     ASSERT_EQ(read_all(text, false, true), read_all(text, true));
   }
+}
+
+// TraceReader::screened: a command it calls screened has every parameter passing its key's
+// screen, and the need bits of all of them; random screens over the random jobs above.
+TEST(TraceReaderFastLines, ScreenedCommandsPassTheirScreens) {
+  std::mt19937 rng(20261202);
+  std::vector<toolpath::ValueScreen> screens(toolpath::param_key_count + 1);
+  std::size_t screened = 0;
+  for (int round = 0; round < 2000; ++round) {
+    for (toolpath::ValueScreen& e : screens) {
+      e.kinds = static_cast<std::uint8_t>(rng() % 4 ? 0x1f : rng() % 32);
+      e.low = rng() % 4 ? -1e300 : -1.0;
+      e.high = rng() % 4 ? 1e300 : 100.0;
+      e.need = static_cast<std::uint16_t>(rng() % 3 ? 0 : 1u << (rng() % 16));
+    }
+    const std::string text = random_job(rng, 1 + rng() % 40);
+    std::istringstream in(text);
+    toolpath::TraceReader reader(in, "f.trace");
+    reader.screen_values(screens.data());
+    toolpath::Command c;
+    try {
+      while (reader.next(c)) {
+        std::uint32_t need = 0;
+        if (!reader.screened(need)) continue;
+        ++screened;
+        std::uint32_t expected = 0;
+        for (const toolpath::Parameter& p : c.parameters) {
+          ASSERT_NE(p.key, toolpath::ParamKey::none) << p.name;
+          const toolpath::ValueScreen& e = screens[static_cast<std::size_t>(p.key)];
+          ASSERT_TRUE(e.passes(p.value)) << p.name << " of command " << c.index << " in\n" << text;
+          expected |= e.need;
+        }
+        ASSERT_EQ(need, expected) << "command " << c.index << " in\n" << text;
+      }
+    } catch (const toolpath::InputError&) {
+    }
+  }
+  EXPECT_GT(screened, 200u);
 }
 
 }  // namespace
