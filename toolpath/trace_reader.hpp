@@ -68,7 +68,7 @@ public:
   void skim_job_motions() { skim_ = true; }
 
   // Screens the values the fast path reads by `by_key` (indexed by ParamKey, param_key_count + 1
-  // entries, outliving the reader).
+  // entries, copied).
   void screen_values(const ValueScreen* by_key);
   // For the command next() gave last, after screen_values(): true when the fast path read every
   // parameter and each passed its key's screen, with `need` the OR of their need bits; false when

@@ -274,7 +274,7 @@ struct alignas(64) KeyMemo {  // one line each, found by a shift
   // comparison and the copy each time: after a few misses in a row it rests for a while.
   std::uint8_t misses = 0;  // in a row
   std::uint8_t rest = 0;    // numbers of the key read before it keeps one again
-  static constexpr std::uint8_t kMissesBeforeRest = 3, kRest = 32;
+  static constexpr std::uint8_t kMissesBeforeRest = 2, kRest = 64;
 
   static std::uint64_t word(const char* v) {
     std::uint64_t w;
