@@ -105,12 +105,16 @@ std::size_t user_value_end(std::string_view text, std::size_t v) {
 // '\n' and knows the end; the reader's fast path does not, and takes a '\n' (or "\r\n", as
 // read_line strips the '\r') where a value or the blanks after it end for the line end: no name,
 // number, word or blank the run reads holds one, so the run never steps over it.
+// The fast path remembers numbers and screens values (KeyMemo); the general rule reads every
+// number afresh, and a line it reads leaves the command unscreened.
 struct KnownEnd {
+  static constexpr bool kRemembers = false;
   const char* end;
   bool at(const char* k) const { return k == end; }
   const char* bound() const { return end; }  // the names compared lie below it
 };
 struct NewlineEnd {
+  static constexpr bool kRemembers = true;
   const char* chunk_end;  // the string's '\0' there stops every scan
   bool at(const char* k) const { return *k == '\n' || (*k == '\r' && k[1] == '\n'); }
   const char* bound() const { return chunk_end; }
@@ -124,9 +128,16 @@ struct NewlineEnd {
 // the general loop reads it again from its name and stores it over (or throws). Returns where the
 // run stopped: the end of the line (end.at() holds) when it read everything; `used` counts the
 // slots filled. A value's column is column_base plus its address (below 2^32: see kMaxLine).
+// When End is the fast path's: `memos` holds the numbers last read and the screens, one per key
+// (KeyMemo), and `screening` collects the screens' verdicts on the values stored.
+struct Screening {
+  std::uint32_t need = 0;
+  bool passed = true;
+};
 template <class End>
 [[gnu::always_inline]] inline const char* run_pairs(Command& out, std::size_t& used, const char* q, End end,
-                                                    std::uintptr_t column_base, std::uint32_t line) {
+                                                    std::uintptr_t column_base, std::uint32_t line, KeyMemo* memos,
+                                                    Screening& screening) {
   Parameter* p = out.parameters.data() + used;
   Parameter* const last = out.parameters.data() + out.parameters.size();
   const char* v = p < last ? slot_value(*p, q, end.bound()) : nullptr;
@@ -136,15 +147,33 @@ template <class End>
     p->line = line;
     p->column = static_cast<std::uint32_t>(column_base + reinterpret_cast<std::uintptr_t>(v));
     const char* k;  // where the value ends
-    if (const NumberScan number = scan_terminated_number(v); number.length > 0) {
+    KeyMemo* memo = nullptr;
+    bool recalled = false;
+    if constexpr (End::kRemembers) {
+      memo = memos + static_cast<std::size_t>(p->key);
+      screening.need |= memo->screen.need;
+      if (memo->holds(v, end.bound())) {
+        k = memo->recall(v, p->value);
+        screening.passed &= memo->passed;
+        recalled = true;
+      }
+    }
+    if (recalled) {
+    } else if (const NumberScan number = scan_terminated_number(v); number.length > 0) {
       k = v + number.length;
       const ChangeFlag flag = flag_letter(*k);
       k += flag != ChangeFlag::None;
       if (!store_exact_number(p->value, number, flag)) break;
+      if constexpr (End::kRemembers) {
+        const bool passes = memo->screen.passes(p->value);
+        screening.passed &= passes;
+        memo->keep(v, k, end.bound(), p->value, passes);
+      }
     } else if (is_ident_start(*v)) {
       k = v + 1;
       while (is_ident_char(*k)) ++k;
       store_word(p->value, {v, static_cast<std::size_t>(k - v)});
+      if constexpr (End::kRemembers) screening.passed &= memo->screen.passes(p->value);
     } else {
       break;
     }
@@ -175,7 +204,9 @@ template <class End>
                                                        std::size_t column, std::uint32_t line) {
   const char* const start = text.data();
   const std::uintptr_t column_base = column - reinterpret_cast<std::uintptr_t>(start);
-  return static_cast<std::size_t>(run_pairs(out, used, start + at, KnownEnd{start + text.size()}, column_base, line) - start);
+  Screening none;
+  return static_cast<std::size_t>(
+      run_pairs(out, used, start + at, KnownEnd{start + text.size()}, column_base, line, nullptr, none) - start);
 }
 
 }  // namespace
@@ -214,6 +245,7 @@ Parameter& new_slot(Command& out, std::size_t& used, std::string_view name) {
 // (read_line): the scans below may look at it.
 void TraceReader::parse_pairs(Command& out, std::string_view text, std::size_t column, TraceLine::Kind otherwise) {
   assert(text.data() + text.size() == line_.data() + line_.size());
+  screen_passed_ = false;
   const std::size_t i = skip_blanks(text, 0);
   if (i == text.size()) return;
   // Most lines are one common run to their end; the general loop takes what is left.
@@ -232,18 +264,25 @@ std::size_t TraceReader::fast_lines(Command& out, const char* p, const char* lin
   const NewlineEnd end{buffer_.data() + buffer_.size()};
   std::size_t taken = 0;
   std::size_t used = used_parameters_;
+  // Also the pairs of a line not taken: the general rule reads it, and the command is unscreened.
+  Screening screening;
+  const auto done = [&] {
+    screen_need_ |= screening.need;
+    screen_passed_ &= screening.passed;
+    return taken;
+  };
   for (;;) {
     p = skip_terminated_blanks(p, end.chunk_end);
     if (!end.at(p)) {
-      p = run_pairs(out, used, p, end, 1 - reinterpret_cast<std::uintptr_t>(line), next_line32());
-      if (!end.at(p)) return taken;
+      p = run_pairs(out, used, p, end, 1 - reinterpret_cast<std::uintptr_t>(line), next_line32(), memos_.get(), screening);
+      if (!end.at(p)) return done();
     }
     used_parameters_ = used;
     line = p + (*p == '\r' ? 2 : 1);
     take_line(line);
     ++taken;
     p = skip_terminated_blanks(line, end.chunk_end);
-    if (p[0] != '.' || p[1] != '.' || p[2] != '>') return taken;  // each read only after the one before matched
+    if (p[0] != '.' || p[1] != '.' || p[2] != '>') return done();  // each read only after the one before matched
     p += 3;
   }
 }

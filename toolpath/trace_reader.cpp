@@ -55,7 +55,8 @@ bool is_skimmed_motion(std::string_view n) {
 
 }  // namespace
 
-TraceReader::TraceReader(std::istream& in, std::string file_name) : in_(in), file_(std::move(file_name)) {}
+TraceReader::TraceReader(std::istream& in, std::string file_name)
+    : in_(in), file_(std::move(file_name)), memos_(std::make_unique<KeyMemo[]>(param_key_count + 1)) {}
 
 TraceReader::~TraceReader() = default;
 
@@ -65,6 +66,12 @@ std::unique_ptr<TraceReader> TraceReader::open(const std::string& path) {
   auto reader = std::make_unique<TraceReader>(*file, path);
   reader->owned_ = std::move(file);
   return reader;
+}
+
+void TraceReader::screen_values(const ValueScreen* by_key) {
+  for (std::size_t k = 0; k <= param_key_count; ++k) memos_[k] = KeyMemo{};  // kept verdicts were by other screens
+  for (std::size_t k = 0; k <= param_key_count; ++k) memos_[k].screen = by_key[k];
+  screening_ = true;
 }
 
 void TraceReader::fail(std::size_t column, const std::string& message) const {
@@ -173,6 +180,8 @@ void TraceReader::begin_command(Command& out) {
   out.depth = 1;  // out.name: still the name of what out's parameters last held (see parse_header)
   out.trace.clear();
   used_parameters_ = 0;
+  screen_passed_ = true;
+  screen_need_ = 0;
   have_line_ = false;
 }
 
@@ -414,6 +423,7 @@ void TraceReader::parse_body_line(Command& out, bool first_after_header, std::si
     std::size_t colon = skip_blanks(s, i + n);
     if (colon < s.size() && s[colon] == ':') {
       std::size_t v = skip_blanks(s, colon + 1);
+      screen_passed_ = false;
       Parameter& p = add_parameter(out, used_parameters_, rest.substr(0, n));
       mark_position(p, line_number_, v + 1);
       parse_value_into(p.value, s.substr(v), Place{file_, line_number_, v + 1});

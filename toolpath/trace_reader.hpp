@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <istream>
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -17,6 +18,25 @@
 #include "toolpath/source.hpp"
 
 namespace toolpath {
+
+namespace trace_syntax {
+struct KeyMemo;
+}
+
+// What a consumer that holds every parameter to a rule of its key (postproc::ParameterCheck) takes
+// without a closer look, given to the reader as plain data (TraceReader::screen_values): the
+// reader's fast path then tells, per command, whether every parameter passed, so that the
+// consumer need not look at each one again.
+struct ValueScreen {
+  double low = -std::numeric_limits<double>::infinity();  // a Numeric value lies in [low, high]
+  double high = std::numeric_limits<double>::infinity();  // (which NaN never does)
+  std::uint16_t need = 0;  // bits the consumer collects per command
+  std::uint8_t kinds = 0;  // the value kinds (bit 1 << ValueKind) taken as they are
+  bool passes(const Value& v) const {
+    if (((kinds >> static_cast<unsigned>(v.kind)) & 1u) == 0) return false;
+    return v.kind != ValueKind::Numeric || (v.numeric >= low && v.numeric <= high);
+  }
+};
 
 // Parses one value as it appears after `name :` (`'text'`, `12`, `1.5T`, `TRUE`, `CW`, or free text).
 // Throws InputError at `where` (column advanced to the fault) when the text is malformed.
@@ -46,6 +66,17 @@ public:
   // still count, so indices and lines stay those of a full read; the lines of a skipped command
   // are not parsed, so what is wrong in them is found by the full read only.
   void skim_job_motions() { skim_ = true; }
+
+  // Screens the values the fast path reads by `by_key` (indexed by ParamKey, param_key_count + 1
+  // entries, copied).
+  void screen_values(const ValueScreen* by_key);
+  // For the command next() gave last, after screen_values(): true when the fast path read every
+  // parameter and each passed its key's screen, with `need` the OR of their need bits; false when
+  // the consumer has to look at the parameters itself.
+  bool screened(std::uint32_t& need) const {
+    need = screen_need_;
+    return screening_ && screen_passed_;
+  }
 
 private:
   bool read_line();
@@ -102,6 +133,10 @@ private:
   bool in_job_ = false;
   bool job_leading_ = false;     // only tool changes since the job's @start_of_job
   ParameterShelf shelf_;
+  std::unique_ptr<trace_syntax::KeyMemo[]> memos_;  // the fast path's numbers and screens, one per key
+  bool screening_ = false;      // screen_values()
+  bool screen_passed_ = false;  // screened(), for the command being read
+  std::uint32_t screen_need_ = 0;
   std::atomic<std::uintmax_t> bytes_read_{0};
 };
 

@@ -14,6 +14,7 @@
 #include "toolpath/command.hpp"
 #include "toolpath/error.hpp"
 #include "toolpath/short_text.hpp"
+#include "toolpath/trace_reader.hpp"
 #include "toolpath/value.hpp"
 
 namespace toolpath::trace_syntax {
@@ -251,6 +252,76 @@ inline bool store_exact_number(Value& out, const NumberScan& n, ChangeFlag flag)
   out.flag = flag;
   return true;
 }
+
+// What the reader's fast path keeps per key (trace_pairs.cpp): the consumer's screen, and the
+// number the key's value last was, as text, with what it gave. SolidCAM writes every parameter of
+// a command each time, most of them unchanged, so the same bytes come back and need no scan and
+// conversion. A number's value depends on its bytes only, so bytes that match give what the scan
+// would give, and pass the key's screen as they did. The entry keeps its own copy of the value,
+// never the slot's Value: the filters round values in place, and slots travel between commands.
+struct alignas(64) KeyMemo {  // one line each, found by a shift
+  ValueScreen screen;
+  // The number and its flag letter, in the bytes of `mask` (little-endian); none when `text` is 0
+  // (a value's first byte is never 0) and `mask` all ones.
+  std::uint64_t text = 0;
+  std::uint64_t mask = ~std::uint64_t{0};
+  std::uint64_t bits = 0;  // the Integer, or the Numeric's bits
+  std::uint8_t size = 0;   // the bytes of the number and its flag
+  ValueKind kind = ValueKind::Integer;
+  ChangeFlag flag = ChangeFlag::None;
+  bool passed = false;  // the kept value passes `screen`
+  // A parameter whose value changes every time (a coordinate along a contour) would pay for the
+  // comparison and the copy each time: after a few misses in a row it rests for a while.
+  std::uint8_t misses = 0;  // in a row
+  std::uint8_t rest = 0;    // numbers of the key read before it keeps one again
+  static constexpr std::uint8_t kMissesBeforeRest = 2, kRest = 64;
+
+  static std::uint64_t word(const char* v) {
+    std::uint64_t w;
+    std::memcpy(&w, v, 8);
+    return w;
+  }
+  // Whether the value at `v` is the one kept, then a blank or a line end, which no number goes on
+  // past (`bound`: the last byte that may be read).
+  [[gnu::always_inline]] bool holds(const char* v, const char* bound) const {
+    if (v + 8 > bound || ((word(v) ^ text) & mask) != 0) return false;
+    constexpr std::uint64_t kEnds = 1ull << ' ' | 1ull << '\t' | 1ull << '\n' | 1ull << '\r';
+    const auto after = static_cast<unsigned char>(v[size]);
+    return after <= ' ' && ((kEnds >> after) & 1) != 0;
+  }
+  // Stores the kept value into `out` as store_exact_number stored it; returns where it ends.
+  [[gnu::always_inline]] const char* recall(const char* v, Value& out) {
+    misses = 0;
+    out.kind = kind;
+    out.flag = flag;
+    if (kind == ValueKind::Integer) out.integer = static_cast<std::int64_t>(bits);
+    else std::memcpy(&out.numeric, &bits, sizeof bits);
+    return v + size;
+  }
+  // Keeps `value`, just stored from the number (and flag) from `v` to `end` as the kept one did
+  // not hold, when it fits and the entry is not resting; `passes`: whether it passes `screen`.
+  [[gnu::always_inline]] void keep(const char* v, const char* end, const char* bound, const Value& value, bool passes) {
+    if constexpr (std::endian::native != std::endian::little) return;
+    if (rest != 0) return void(--rest);
+    if (text != 0 && ++misses == kMissesBeforeRest) {
+      misses = 0;
+      rest = kRest;
+      text = 0;
+      mask = ~std::uint64_t{0};
+      return;
+    }
+    const std::size_t n = static_cast<std::size_t>(end - v);  // 1 to 8 for a number that fits
+    if (n > 8 || v + 8 > bound) return;
+    mask = ~std::uint64_t{0} >> (8 * (8 - n));
+    text = word(v) & mask;
+    size = static_cast<std::uint8_t>(n);
+    kind = value.kind;
+    flag = value.flag;
+    passed = passes;
+    if (kind == ValueKind::Integer) bits = static_cast<std::uint64_t>(value.integer);
+    else std::memcpy(&bits, &value.numeric, sizeof bits);
+  }
+};
 
 // Records where a parameter's value starts (saturating: positions past 2^32 are not told apart).
 inline void mark_position(Parameter& p, std::size_t line, std::size_t column) {

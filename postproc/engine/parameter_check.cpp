@@ -11,6 +11,7 @@
 #include "toolpath/bounded_read.hpp"
 #include "toolpath/error.hpp"
 #include "toolpath/short_text.hpp"
+#include "toolpath/trace_reader.hpp"
 
 namespace postproc {
 namespace {
@@ -138,18 +139,15 @@ constexpr Range kRanges[] = {
 
 // Per key: the Need bit it stands for (the centre counts in halves, put together in next()), and
 // the value kinds (bit 1 << ValueKind) that `accepts` and `in_range` surely take for it; a Numeric
-// value also has to lie in kRanges[range]. What is not marked here goes to check_slow, which
+// value also has to lie in its kRanges entry. What is not marked here goes to check_slow, which
 // decides by the general rule, so a bit left out costs time, never a verdict. The key `none`
-// marks nothing: a name outside the key list is looked up by name.
-struct KeyCheck {
-  double low = -kInf, high = kInf;  // kRanges[range], kept here: no second load
-  std::uint16_t need = 0;
-  std::uint8_t ok = 0;
-  std::uint8_t range = kAnyNumber;
-};
-const std::array<KeyCheck, toolpath::param_key_count + 1>& key_checks() {
+// marks nothing: a name outside the key list is looked up by name. A TraceReader screens the
+// values it reads by the same table (toolpath::ValueScreen).
+const std::array<toolpath::ValueScreen, toolpath::param_key_count + 1>& key_checks() {
   static const auto table = [] {
-    std::array<KeyCheck, toolpath::param_key_count + 1> t{};
+    std::array<toolpath::ValueScreen, toolpath::param_key_count + 1> t{};
+    std::array<std::uint8_t, toolpath::param_key_count + 1> range;
+    range.fill(kAnyNumber);
     using K = toolpath::ParamKey;
     constexpr auto bit = [](ValueKind k) { return static_cast<std::uint8_t>(1u << static_cast<unsigned>(k)); };
     const std::uint8_t I = bit(ValueKind::Integer), N = bit(ValueKind::Numeric), L = bit(ValueKind::Logical),
@@ -157,29 +155,29 @@ const std::array<KeyCheck, toolpath::param_key_count + 1>& key_checks() {
     const auto& kinds = kinds_by_key();
     for (std::size_t k = 0; k < t.size(); ++k) {
       if (k == static_cast<std::size_t>(K::none)) continue;
-      KeyCheck& c = t[k];
+      std::uint8_t& ok = t[k].kinds;
       switch (kinds[k]) {
-        case int(ParameterKind::Numeric): c.ok = I | N | L, c.range = kFinite; break;
-        case int(ParameterKind::Integer): c.ok = I | N | L | E, c.range = kIntegerRange; break;
-        case int(ParameterKind::Logical): c.ok = L; break;  // numbers: 0 or 1, by the general rule
-        case int(ParameterKind::String): c.ok = S | E; break;
-        case int(ParameterKind::Enum): c.ok = I | N | L | E; break;
-        default: c.ok = I | N | L | S | E; break;  // not in the catalogue: nothing to check
+        case int(ParameterKind::Numeric): ok = I | N | L, range[k] = kFinite; break;
+        case int(ParameterKind::Integer): ok = I | N | L | E, range[k] = kIntegerRange; break;
+        case int(ParameterKind::Logical): ok = L; break;  // numbers: 0 or 1, by the general rule
+        case int(ParameterKind::String): ok = S | E; break;
+        case int(ParameterKind::Enum): ok = I | N | L | E; break;
+        default: ok = I | N | L | S | E; break;  // not in the catalogue: nothing to check
       }
     }
     // in_range: a feed of 0 or more, a radius above 0 (integers take the general rule).
-    for (auto [key, range] : {std::pair{K::feed, kFeedRange}, std::pair{K::radius, kRadiusRange}}) {
-      KeyCheck& c = t[static_cast<std::size_t>(key)];
-      const bool numeric = kinds[static_cast<std::size_t>(key)] == int(ParameterKind::Numeric);
-      c.ok = numeric ? static_cast<std::uint8_t>(c.ok & ~I) : 0;
-      c.range = range;
+    for (auto [key, key_range] : {std::pair{K::feed, kFeedRange}, std::pair{K::radius, kRadiusRange}}) {
+      const auto k = static_cast<std::size_t>(key);
+      const bool numeric = kinds[k] == int(ParameterKind::Numeric);
+      t[k].kinds = numeric ? static_cast<std::uint8_t>(t[k].kinds & ~I) : 0;
+      range[k] = key_range;
     }
     const std::pair<K, std::uint32_t> bits[] = {{K::xpos, kX},          {K::ypos, kY},           {K::zpos, kZ},
                                                 {K::feed, kFeed},       {K::arc_direction, kDirection},
                                                 {K::xcenter, kXcentre}, {K::ycenter, kYcentre},  {K::xcenter_rel, kXrel},
                                                 {K::ycenter_rel, kYrel}, {K::tool_number, kTool}};
     for (auto [key, need] : bits) t[static_cast<std::size_t>(key)].need = static_cast<std::uint16_t>(need);
-    for (KeyCheck& c : t) c.low = kRanges[c.range].low, c.high = kRanges[c.range].high;
+    for (std::size_t k = 0; k < t.size(); ++k) t[k].low = kRanges[range[k]].low, t[k].high = kRanges[range[k]].high;
     return t;
   }();
   return table;
@@ -226,7 +224,14 @@ std::string kind_mismatch(ParameterKind kind, const toolpath::Value& v) {
 }
 
 ParameterCheck::ParameterCheck(toolpath::CommandSource& inner, std::string file_name, Warn warn, Deeper deeper)
-    : inner_(inner), file_(std::move(file_name)), warn_(std::move(warn)), leave_deeper_(deeper == Deeper::Leave) {}
+    : inner_(inner), file_(std::move(file_name)), warn_(std::move(warn)), leave_deeper_(deeper == Deeper::Leave) {
+  // A trace reader screens the values as it reads them, by the fast path's table below: a command
+  // whose every parameter passed needs no second look here.
+  if (auto* reader = dynamic_cast<toolpath::TraceReader*>(&inner)) {
+    reader->screen_values(key_checks().data());
+    screening_ = reader;
+  }
+}
 
 int ParameterCheck::unkeyed_kind(const toolpath::Parameter& p) {
   const std::string& name = p.name;
@@ -254,17 +259,15 @@ bool ParameterCheck::next(toolpath::Command& out) {
     // What the original post did itself: kept as written, or left out.
     if (!out.is_stream_command() && !leave_deeper_) return true;
   } while (!out.is_stream_command());
-  const auto& checks = key_checks();
   std::uint32_t present = 0;
-  for (const toolpath::Parameter& p : out.parameters) {
-    const KeyCheck& e = checks[static_cast<std::size_t>(p.key)];
-    present |= e.need;
-    const auto vk = static_cast<unsigned>(p.value.kind);
-    if ((e.ok >> vk) & 1u) {
-      if (p.value.kind != ValueKind::Numeric) continue;
-      if (p.value.numeric >= e.low && p.value.numeric <= e.high) continue;  // false for NaN
+  if (!screening_ || !screening_->screened(present)) {
+    present = 0;
+    const auto& checks = key_checks();
+    for (const toolpath::Parameter& p : out.parameters) {
+      const toolpath::ValueScreen& e = checks[static_cast<std::size_t>(p.key)];
+      present |= e.need;
+      if (!e.passes(p.value)) check_slow(out, p);
     }
-    check_slow(out, p);
   }
   if (((present & kXcentre) && (present & kYcentre)) || ((present & kXrel) && (present & kYrel))) present |= kCentre;
   // Only what was read from a trace: a controller model's stream (2XAxisCNC has no Z), read

@@ -15,6 +15,10 @@
 #include "toolpath/error.hpp"
 #include "toolpath/source.hpp"
 
+namespace toolpath {
+class TraceReader;
+}
+
 namespace postproc {
 
 // What is wrong with `value` for a parameter of `kind` ("expected a number, not `12..5`"); empty
@@ -49,6 +53,7 @@ private:
   int unkeyed_kind(const toolpath::Parameter& p);
 
   toolpath::CommandSource& inner_;
+  const toolpath::TraceReader* screening_ = nullptr;  // inner_, when a trace reader screens the values
   std::string file_;
   std::unordered_map<std::string, int> unkeyed_;  // names outside the key list, looked up once
   // The last names looked up in unkeyed_, by a hash of their length and first bytes (`kind` -2:

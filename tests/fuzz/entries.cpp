@@ -136,9 +136,43 @@ void check_skim(const std::string& text) {
   left_out_until(static_cast<std::size_t>(-1));
 }
 
+// The fast path (the common lines straight from the chunk, numbers remembered per key) reads
+// what the general rule reads: the same commands, positions and error.
+void check_fast_path(const std::string& text) {
+  auto read = [&](bool general, std::string& error) {
+    std::istringstream in(text);
+    toolpath::TraceReader reader(in, "fuzz.trace");
+    if (general) reader.read_by_general_rule();
+    std::vector<toolpath::Command> all;
+    toolpath::Command a, b;  // two buffers in turn, so that the parameter shelf swaps them
+    toolpath::Command* c = &a;
+    try {
+      while (reader.next(*c)) {
+        all.push_back(*c);
+        c = c == &a ? &b : &a;
+      }
+    } catch (const toolpath::InputError& e) {
+      error = e.what();
+    }
+    return all;
+  };
+  std::string fast_error, general_error;
+  const std::vector<toolpath::Command> fast = read(false, fast_error), general = read(true, general_error);
+  if (fast_error != general_error) broken("the fast path fails otherwise than the general rule");
+  if (fast.size() != general.size()) broken("the fast path reads another number of commands");
+  for (std::size_t i = 0; i < fast.size(); ++i) {
+    if (!(fast[i] == general[i]) || fast[i].line != general[i].line) broken("the fast path reads a command otherwise");
+    for (std::size_t k = 0; k < fast[i].parameters.size(); ++k)
+      if (fast[i].parameters[k].line != general[i].parameters[k].line ||
+          fast[i].parameters[k].column != general[i].parameters[k].column)
+        broken("the fast path puts a value elsewhere");
+  }
+}
+
 void trace_reader(std::string_view data) {
   const std::string text(data);
   check_skim(text);
+  check_fast_path(text);
   std::vector<toolpath::Command> first;
   try {
     first = read_all(text);

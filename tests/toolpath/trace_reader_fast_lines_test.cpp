@@ -16,7 +16,9 @@
 namespace {
 
 // Everything a reader gives for `text`: each command with its positions, then the error if any.
-std::string read_all(const std::string& text, bool general) {
+// With `scribble`, each command's values are overwritten once recorded, as the filters round
+// values in place before the buffers come back: what the reader remembers must be its own.
+std::string read_all(const std::string& text, bool general, bool scribble = false) {
   std::istringstream in(text);
   toolpath::TraceReader reader(in, "f.trace");
   if (general) reader.read_by_general_rule();
@@ -32,6 +34,13 @@ std::string read_all(const std::string& text, bool general) {
       for (const toolpath::Parameter& p : c->parameters) out << ' ' << p.name << '@' << p.line << ':' << p.column;
       out << '\n';
       kept.push_back(*c);
+      if (scribble)
+        for (toolpath::Parameter& p : c->parameters) {
+          p.value.kind = p.value.kind == toolpath::ValueKind::Integer ? toolpath::ValueKind::Numeric : toolpath::ValueKind::Integer;
+          p.value.flag = toolpath::ChangeFlag::Changed;
+          p.value.integer += 3;
+          p.value.numeric = p.value.numeric * 0.5 + 0.25;
+        }
       c = c == &a ? &b : &a;
     }
   } catch (const toolpath::InputError& e) {
@@ -176,6 +185,96 @@ TEST(TraceReaderFastLines, MutatedLayoutExample) {
     test_support::random_edits(text, rng, std::string_view(alphabet, sizeof alphabet - 1), 1 + static_cast<int>(rng() % 4));
     check(text);
   }
+}
+
+// The fast path remembers each key's last number (trace_syntax::KeyMemo) and takes the same
+// bytes again without scanning them. Numbers that share the remembered bytes and go on past them
+// (`1.5` then `1.55`, `1.5e3`, `1.5T`, `1.5x`), flags, numbers too long to be remembered, words,
+// and each kind of line end, in jobs where every key takes few values; read with the values
+// scribbled over between commands as well.
+TEST(TraceReaderFastLines, RepeatedNumbersAsTheGeneralRuleReadsThem) {
+  const char* values[] = {"1", "1T", "1F", "1t", "10", "1.5", "1.5", "1.5", "1.55", "1.5e3", "1.5T", "1.5F", "1.5x",
+                          "1.5.5", "1.50", "-1.5", "+1.5", "1.", ".5", "-0", "0", "-0.5", "-0.5F", "1500.0",
+                          "1500.0F", "12345678", "-1234567", "123456789", "1234567.5", "12345678901234567890",
+                          "1e5", "2e", "2e+", "CW", "TRUE", "1:", "1'"};
+  const char* params[] = {"xpos", "ypos", "zpos", "feed"};
+  const char* ends[] = {"\n", "\n", "\n", "\r\n", "  \n", "\t\n", "\r \n", "\rx\n"};
+  const char* blanks[] = {" ", " ", "  ", "\t"};
+  std::mt19937 rng(20261131);
+  for (int round = 0; round < 2000; ++round) {
+    // Each key takes one of a few values of the list most of the time.
+    std::size_t pool[std::size(params)][3];
+    for (auto& key : pool)
+      for (std::size_t& v : key) v = rng() % std::size(values);
+    std::string text;
+    for (std::size_t c = 1 + rng() % 30; c > 0; --c) {
+      text += rng() % 2 ? "(1)@line            ==>" : "(1)@arc             ==>";
+      for (std::size_t k = 0; k < std::size(params); ++k) {
+        if (k == 2 && rng() % 2) {
+          text += ends[rng() % std::size(ends)];
+          text += "                    ..>";
+        }
+        text += blanks[rng() % std::size(blanks)];
+        text += params[k];
+        text += ':';
+        text += rng() % 10 == 0 ? values[rng() % std::size(values)] : values[pool[k][rng() % 3]];
+      }
+      text += ends[rng() % std::size(ends)];
+    }
+    const std::string general = read_all(text, true);
+    ASSERT_EQ(read_all(text, false), general) << "input:\n" << text;
+    ASSERT_EQ(read_all(text, false, true), general) << "input:\n" << text;
+  }
+}
+
+// A remembered number near the end of a chunk, where the bytes after it are not all there: the
+// lines around the chunk end read at every offset, with each line's numbers as the one before.
+TEST(TraceReaderFastLines, RepeatedNumbersAtTheEndOfAChunk) {
+  const std::string line = "(1)@line            ==> xpos:45.0 ypos:1 zpos:-0.5F feed:1500.0\n";
+  for (std::size_t shift = 0; shift < line.size() + 2; ++shift) {
+    std::string text(shift, '\n');
+    while (text.size() < (std::size_t{1} << 18) + 200) text += line;
+    check(text);
+    ASSERT_EQ(read_all(text, false, true), read_all(text, true));
+  }
+}
+
+// TraceReader::screened: a command it calls screened has every parameter passing its key's
+// screen, and the need bits of all of them; random screens over the random jobs above.
+TEST(TraceReaderFastLines, ScreenedCommandsPassTheirScreens) {
+  std::mt19937 rng(20261202);
+  std::vector<toolpath::ValueScreen> screens(toolpath::param_key_count + 1);
+  std::size_t screened = 0;
+  for (int round = 0; round < 2000; ++round) {
+    for (toolpath::ValueScreen& e : screens) {
+      e.kinds = static_cast<std::uint8_t>(rng() % 4 ? 0x1f : rng() % 32);
+      e.low = rng() % 4 ? -1e300 : -1.0;
+      e.high = rng() % 4 ? 1e300 : 100.0;
+      e.need = static_cast<std::uint16_t>(rng() % 3 ? 0 : 1u << (rng() % 16));
+    }
+    const std::string text = random_job(rng, 1 + rng() % 40);
+    std::istringstream in(text);
+    toolpath::TraceReader reader(in, "f.trace");
+    reader.screen_values(screens.data());
+    toolpath::Command c;
+    try {
+      while (reader.next(c)) {
+        std::uint32_t need = 0;
+        if (!reader.screened(need)) continue;
+        ++screened;
+        std::uint32_t expected = 0;
+        for (const toolpath::Parameter& p : c.parameters) {
+          ASSERT_NE(p.key, toolpath::ParamKey::none) << p.name;
+          const toolpath::ValueScreen& e = screens[static_cast<std::size_t>(p.key)];
+          ASSERT_TRUE(e.passes(p.value)) << p.name << " of command " << c.index << " in\n" << text;
+          expected |= e.need;
+        }
+        ASSERT_EQ(need, expected) << "command " << c.index << " in\n" << text;
+      }
+    } catch (const toolpath::InputError&) {
+    }
+  }
+  EXPECT_GT(screened, 200u);
 }
 
 }  // namespace

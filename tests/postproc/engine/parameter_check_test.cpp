@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <random>
 #include <vector>
 #include <fstream>
 #include <sstream>
@@ -259,6 +260,117 @@ TEST(ParameterCheck, RunErrorsNameTheValue) {
   }
   fs::remove_all(dir);
   EXPECT_EQ(error.rfind("job.trace:9:12: parameter `my_depth` of @line: error 386: ", 0), 0u) << "[" << error << "]";
+}
+
+// Passes a source on without being it: the check then cannot ask a trace reader for its screen.
+class Unscreened final : public toolpath::CommandSource {
+public:
+  explicit Unscreened(toolpath::CommandSource& inner) : inner_(inner) {}
+  bool next(toolpath::Command& out) override { return inner_.next(out); }
+
+private:
+  toolpath::CommandSource& inner_;
+};
+
+// What the check gives for `trace`: every command with its values, the warnings, then the error
+// if any. With `screen`, the check reads from the trace reader itself, which screens the values
+// for it; `screened` counts the commands it took as screened.
+std::string checked(const std::string& trace, bool screen, int* screened = nullptr) {
+  std::istringstream in(trace);
+  toolpath::TraceReader reader(in, "job.trace");
+  Unscreened hidden(reader);
+  std::ostringstream out;
+  postproc::ParameterCheck check(screen ? static_cast<toolpath::CommandSource&>(reader) : hidden, "job.trace",
+                                 [&](const toolpath::SourcePosition& at, const std::string& m) {
+                                   out << "warning " << at.line << ':' << at.column << ": " << m << '\n';
+                                 });
+  toolpath::Command c;
+  try {
+    while (check.next(c)) {
+      out << c.index << ' ' << c.name << ':';
+      for (const toolpath::Parameter& p : c.parameters)
+        out << ' ' << p.name << '=' << int(p.value.kind) << '/' << p.value.integer << '/' << p.value.numeric << '/' << p.value.text;
+      out << '\n';
+      std::uint32_t need;
+      if (screened && reader.screened(need)) ++*screened;
+    }
+  } catch (const toolpath::InputError& e) {
+    out << "error: " << e.what() << '\n';
+  }
+  return out.str();
+}
+
+// The reader screens the values it reads by the check's own table (toolpath::ValueScreen), so that
+// a command whose every parameter passed is not looked at again: the check must say the same
+// with the screen as without, on jobs with wrong values of every kind (a negative feed, an arc
+// radius of 0, a word for a number, a number for a string, an integer out of range), values the
+// fast path leaves to the general rule, names outside the catalogue, block-form lines, motions
+// that lack what they need, and wrong values in deeper commands, which are not checked.
+TEST(ParameterCheck, ScreenedByTheReaderAsCheckedOneByOne) {
+  struct Key {
+    const char* name;
+    std::vector<const char*> values;  // the first ones pass
+  };
+  const Key keys[] = {
+      {"xpos", {"1.5", "-0.5", "45.0F", "7", "1e3", "CW", "'a'", "TRUE", "12345678901234567890.5"}},
+      {"ypos", {"0.0", "5.0T", "-12", "0", "x"}},
+      {"zpos", {"-0.5", "-1.0", "2", "FALSE"}},
+      {"feed", {"1500.0", "1200.0F", "0", "0.0", "-1.0", "-1", "-0.0", "1e-320", "CCW"}},
+      {"radius", {"5.0", "0.001", "5", "0.0", "-5.0", "0", "4.9e-324"}},
+      {"arc_direction", {"CCW", "CW", "1", "'CW'", "TRUE"}},
+      {"xcenter", {"45.0", "5.0", "'q'"}},
+      {"ycenter", {"5.0", "45.0", "FALSE"}},
+      {"tool_number", {"4", "4.0", "999999999.0", "1000000000.0", "1e12", "T1", "'4'"}},
+      {"job_name", {"'F-BENCH'", "PROFILE", "7", "1.5", "TRUE"}},
+      {"my_note", {"1", "'x'", "CW"}},
+  };
+  const char* commands[] = {"@line", "@arc", "@rapid_move", "@change_tool", "@start_of_job", "@drill_point"};
+  std::mt19937 rng(20261201);
+  int screened = 0;
+  for (int round = 0; round < 3000; ++round) {
+    // The parameters each command name carries in this job (so that the reader's recycled slots
+    // hold their names, as in a job SolidCAM writes, and its fast path reads them).
+    std::uint32_t carries[std::size(commands)];
+    for (std::uint32_t& set : carries) set = static_cast<std::uint32_t>(rng());
+    // Mostly what the motions need (see MotionsCarryWhatTheyNeed): keys 0-3, and 5-7 for @arc.
+    for (std::size_t m : {0, 1, 2, 5}) carries[m] |= rng() % 16 ? 0xfu : 0u;
+    carries[1] |= rng() % 16 ? 0xe0u : 0u;
+    std::string trace;
+    for (std::size_t c = 1 + rng() % 40; c > 0; --c) {
+      const std::size_t command = rng() % 3 == 0 ? rng() % std::size(commands) : rng() % 2;
+      // The original post's own calls are not checked: their wrong values must not pass for
+      // checked ones when a command of the stream repeats them.
+      const bool deeper = rng() % 10 == 0;
+      const std::size_t start = trace.size();
+      trace += std::string(deeper ? "(2)" : "(1)") + commands[command] + "             ==>";
+      std::size_t on_line = 0;
+      for (std::size_t k = 0; k < std::size(keys); ++k) {
+        const Key& key = keys[k];
+        if ((((carries[command] >> k) & 1) != 0) == (rng() % 40 == 0)) continue;  // now and then another shape
+        // Mostly a value that passes; now and then any of them.
+        const std::size_t pick = rng() % (deeper ? 3 : 40) == 0 ? rng() % key.values.size() : rng() % 2;
+        if (rng() % 60 == 0) {
+          trace += std::string("\n  ") + key.name + " : " + key.values[pick] + "\n";  // block form
+          on_line = 0;
+          trace += "                    ..>";
+          continue;
+        }
+        if (++on_line == 5) {
+          trace += "\n                    ..>";
+          on_line = 0;
+        }
+        trace += ' ';
+        trace += key.name;
+        trace += ':';
+        trace += key.values[pick];
+      }
+      trace += '\n';
+      if (deeper && rng() % 2) trace += "(1)" + trace.substr(start + 3);  // the same at depth 1
+    }
+    const std::string expected = checked(trace, false);
+    ASSERT_EQ(checked(trace, true, &screened), expected) << trace;
+  }
+  EXPECT_GT(screened, 2000);  // the screen was used
 }
 
 }  // namespace
