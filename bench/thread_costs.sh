@@ -3,11 +3,14 @@
 # docs/performance.md holds a change to (wall times on a shared machine vary too much).
 #
 # usage: bench/thread_costs.sh [--postproc BIN]... [--motions N] [--shape procedures|flat|both]
-#                              [--post P.gpp] [--prp P.prp] [--keep DIR]
+#                              [--post P.gpp] [--prp P.prp] [--threads 2|3] [--keep DIR]
 #   --postproc  the binary to measure (default build-release/bin/postproc); give it twice or more
 #               to compare builds: their NC files must be byte-identical, else the script fails
 #   --motions   motions of the make_job job (default 100000; make_job must sit beside postproc)
 #   --shape     procedures (`make_job --procedures`, as SolidCAM sends gen_procs = Y), flat, or both
+#   --threads   `postproc run --threads` (default 3: reading on its own thread, so that each stage
+#               has its figure; with 2 the reader's figure holds the filters'), for binaries that
+#               know the option (older ones always ran three threads)
 #   --keep      keep jobs, NC files and callgrind outputs in DIR (default: a temporary folder)
 # Threads are named by what they run most: post (the main thread: engine and GPPL interpreter),
 # reader (the trace reader and the parameter check), filters (the PRP filters).
@@ -21,6 +24,7 @@ shape=both
 post="$root/machines/fanuc/fanuc.gpp"
 prp="$root/machines/fanuc/fanuc.prp"
 keep=""
+threads=3
 while [ $# -gt 0 ]; do
   case "$1" in
     --postproc) binaries+=("$2"); shift 2 ;;
@@ -29,7 +33,8 @@ while [ $# -gt 0 ]; do
     --post) post="$2"; shift 2 ;;
     --prp) prp="$2"; shift 2 ;;
     --keep) keep="$2"; shift 2 ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    --threads) threads="$2"; shift 2 ;;
+    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
     *) echo "thread_costs.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -71,8 +76,10 @@ for s in "${shapes[@]}"; do
   i=0
   for b in "${binaries[@]}"; do
     out="$work/$s.$i"
+    threads_option=()
+    if "$b" run --help 2>&1 | grep -q -- --threads; then threads_option=(--threads "$threads"); fi
     valgrind --tool=callgrind --separate-threads=yes --callgrind-out-file="$out.cg" \
-      "$b" run -q --post "$post" --prp "$prp" -o "$out.nc" "$job" 2>/dev/null
+      "$b" run -q "${threads_option[@]}" --post "$post" --prp "$prp" -o "$out.nc" "$job" 2>/dev/null
     if [ "$i" -gt 0 ] && ! cmp -s "$work/$s.0.nc" "$out.nc"; then
       echo "thread_costs.sh: $b writes other NC than ${binaries[0]} ($s job)" >&2
       exit 1

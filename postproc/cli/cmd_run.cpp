@@ -18,6 +18,10 @@ int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
   auto line_end = args.has("--crlf") ? OutputFiles::LineEnd::CRLF : OutputFiles::LineEnd::LF;
 
   const std::string dialect = args.value("--dialect", "trace");
+  RunOptions::ReaderThread reader_thread = RunOptions::ReaderThread::Auto;
+  if (const std::string threads = args.value("--threads", ""); threads == "2") reader_thread = RunOptions::ReaderThread::Shared;
+  else if (threads == "3") reader_thread = RunOptions::ReaderThread::Own;
+  else if (!threads.empty()) throw UsageError{fmt::format("--threads is 2 or 3, not '{}'", threads)};
 
   Engine engine(engine_opts);
   print_machine_warnings(engine, err);
@@ -31,6 +35,7 @@ int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
   if (dialect == "trace") {
     Input input = Input::open(args.positional()[0]);
     RunOptions options = run_options(input, err);
+    options.reader_thread = reader_thread;
     TraceOutput trace(args, err);
     trace.apply(options);
     options.main_path = main_path;
@@ -44,6 +49,7 @@ int run_run(const Arguments& args, std::ostream& out, std::ostream& err) {
     options.input_name = args.positional()[0];
     options.main_path = main_path;
     options.warnings = &err;
+    options.reader_thread = reader_thread;
     summary = engine.run(*source, files, options);
   }
   if (to.to_stdout) {
@@ -68,6 +74,10 @@ Subcommand run_command() {
   options.push_back(kToolTableOption);
   options.push_back({"--crlf", "", false, "end lines with CR LF (as SolidCAM on Windows) instead of LF"});
   options.push_back({"--quiet", "-q", false, "no progress bar, no summary and no `input` log lines"});
+  options.push_back({"--threads", "", true,
+                     "2: the input is read on the PRP filters' thread, the post runs on the other; 3: reading "
+                     "has a thread of its own. Default: 3 where the process may use 3 CPUs or more, else 2 "
+                     "(the output is the same)"});
   return {
       "run",
       "postproc run --post P.gpp [--prp P.prp] [--dialect NAME] [-o DIR|FILE|-] JOB.trace|PROG.nc",

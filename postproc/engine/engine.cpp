@@ -1,6 +1,9 @@
 #include "postproc/engine/engine.hpp"
 
 #include <fmt/format.h>
+#ifdef __linux__
+#include <sched.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -8,6 +11,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <unordered_map>
 #include <utility>
 
@@ -37,6 +41,41 @@ using toolpath::iequals;
 struct NoCommands final : toolpath::CommandSource {
   bool next(toolpath::Command&) override { return false; }
 };
+
+// `first`, taken to learn the job's units, then the rest of `inner`.
+class StartsWith final : public toolpath::CommandSource {
+public:
+  StartsWith(toolpath::CommandSource& inner, toolpath::Command&& first) : inner_(inner), first_(std::move(first)) {}
+  bool next(toolpath::Command& out) override {
+    if (!has_first_) return inner_.next(out);
+    swap(out, first_);
+    has_first_ = false;
+    return true;
+  }
+
+private:
+  toolpath::CommandSource& inner_;
+  toolpath::Command first_;
+  bool has_first_ = true;
+};
+
+// The CPUs this process may run on.
+unsigned usable_cpus() {
+#ifdef __linux__
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof set, &set) == 0) return static_cast<unsigned>(CPU_COUNT(&set));
+#endif
+  return std::thread::hardware_concurrency();
+}
+
+// Reading on a thread of its own pays where a third CPU can run it. On two, the post and the
+// filters wait for it in turn and every command crosses between the CPUs once more: measured
+// slower (docs/performance.md, "Two threads or three").
+bool reader_on_own_thread(RunOptions::ReaderThread choice) {
+  if (choice != RunOptions::ReaderThread::Auto) return choice == RunOptions::ReaderThread::Own;
+  static const bool three_or_more = usable_cpus() >= 3;
+  return three_or_more;
+}
 
 prp::Units job_units(const toolpath::Command* first) {
   if (!first || !iequals(first->name, "@start_of_file")) return prp::Units::Metric;
@@ -200,11 +239,14 @@ private:
     refuse_procedures_without_calls();
     std::shared_ptr<prp::JobForecast> forecast = two_passes ? forecast_jobs() : nullptr;
     NoCommands ended;  // an empty job: the reader is not asked again
+    // Reading and checking run on the filters' thread, or on one of their own before them.
     std::optional<toolpath::PrefetchSource> read_ahead;
-    if (any) read_ahead.emplace(checked, std::move(first));
-    else read_ahead.emplace(ended);
+    std::optional<StartsWith> read_inline;
+    toolpath::CommandSource* read = &ended;
+    if (any && reader_on_own_thread(options_.reader_thread)) read = &read_ahead.emplace(checked, std::move(first));
+    else if (any) read = &read_inline.emplace(checked, std::move(first));
     auto filtered = prp::build_filter_chain(
-        *machine_, *read_ahead,
+        *machine_, *read,
         [&](const toolpath::Command& c, const std::string& m) {
           warnings(c.line, fmt::format("command #{} {}: {}", c.index, c.name, m));
         },

@@ -93,6 +93,11 @@ struct RunOptions {
   // @start_of_file without `first_user_proc` (docs/engine.md), and procedures generated in two
   // passes (a skim of a trace file first, docs/prp.md). May be empty: then one pass.
   std::function<std::unique_ptr<toolpath::CommandSource>()> reopen;
+  // The input is read and checked on the PRP filters' thread (Shared: two threads with the post's),
+  // or on a thread of its own (Own: three). Auto: Own where the process may use three CPUs or more.
+  // The NC program, warnings and errors are the same either way.
+  enum class ReaderThread : std::uint8_t { Auto, Shared, Own };
+  ReaderThread reader_thread = ReaderThread::Auto;
 };
 
 struct RunSummary {

@@ -154,6 +154,7 @@ TEST(Cli, UsageErrorsOfEverySubcommand) {
       {{"run", "--post", post, "no/such.trace"}, 1, "no/such.trace: cannot open file"},
       {{"run", "--post", post, "postproc/cli/data/bad-number.trace"}, 1,
        "postproc/cli/data/bad-number.trace:4:8: parameter `xpos` of @rapid_move: expected a number, not '12..5'"},
+      {{"run", "--post", post, "--threads", "4", "j.trace"}, 2, "postproc run: --threads is 2 or 3, not '4'"},
       {{"run", "--help"}, 0, ""},
       {{"check"}, 2, "postproc check: expected one or more .gpp files or machine files (.prp, .mac, .vmid)"},
       {{"check", "--bogus", "x.gpp"}, 2, "postproc check: unknown option --bogus"},
@@ -183,6 +184,23 @@ TEST(Cli, UsageErrorsOfEverySubcommand) {
     auto r = run(c.args);
     EXPECT_EQ(r.code, c.code) << r.err;
     EXPECT_NE(r.err.find(c.err_contains), std::string::npos) << r.err;
+  }
+}
+
+// Two threads or three: the same program on stdout, the same error where a run stops.
+TEST(Cli, ThreadsGiveTheSameOutput) {
+  const std::vector<std::string> post{"--post", "../machines/fanuc/fanuc.gpp", "--prp", "../machines/fanuc/fanuc.prp", "-q"};
+  for (const std::string job : {"../docs/examples/sample-job.trace", "postproc/cli/data/bad-number.trace"}) {
+    std::vector<test_support::CliRun> runs;
+    for (const std::string threads : {"2", "3"}) {
+      std::vector<std::string> args{"run", job, "--threads", threads};
+      args.insert(args.end(), post.begin(), post.end());
+      runs.push_back(run(args));
+    }
+    EXPECT_EQ(runs[1].code, runs[0].code) << job;
+    EXPECT_EQ(runs[1].out, runs[0].out) << job;
+    EXPECT_EQ(runs[1].err, runs[0].err) << job;
+    EXPECT_FALSE(runs[0].out.empty() && runs[0].err.empty()) << job;
   }
 }
 
