@@ -114,6 +114,29 @@ std::uint64_t bits_of(double v) {
   return b;
 }
 
+// The filter's shortcuts against `every_value_in_full` on the same commands: the same values, bit
+// for bit, flags and texts included.
+void expect_same_as_every_value_in_full(const std::vector<toolpath::Command>& in, prp::PrecisionSettings s, int round) {
+  ListSource fast_in(in), full_in(in);
+  prp::PrecisionFilter fast(fast_in, s);
+  s.every_value_in_full = true;
+  prp::PrecisionFilter full(full_in, s);
+  const auto a = drain(fast), b = drain(full);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].parameters.size(), b[i].parameters.size());
+    for (std::size_t j = 0; j < a[i].parameters.size(); ++j) {
+      const toolpath::Value &x = a[i].parameters[j].value, &y = b[i].parameters[j].value;
+      ASSERT_EQ(x.kind, y.kind) << round << " " << i << " " << j;
+      ASSERT_EQ(x.flag, y.flag);
+      ASSERT_EQ(x.integer, y.integer);
+      ASSERT_EQ(bits_of(x.numeric), bits_of(y.numeric))
+          << round << " " << i << " " << a[i].parameters[j].name << " " << x.numeric;
+      ASSERT_EQ(x.text, y.text);
+    }
+  }
+}
+
 // The filter leaves most values alone after a few comparisons; on random streams (values at and off
 // the grids, near zero_value, near the axis they move on, integers, texts, names given twice, NaN,
 // infinities, -0) and random settings, it gives what working out every value in full gives, bit
@@ -165,23 +188,8 @@ TEST(PrecisionFilter, ShortcutGivesTheFullStepsResults) {
       if (rng() % 3 == 0) around += pick(0.0, 0.0004, 5.0, -3.25);
       in.push_back(std::move(c));
     }
-    ListSource fast_in(in), full_in(in);
-    prp::PrecisionFilter fast(fast_in, s);
-    s.every_value_in_full = true;
-    prp::PrecisionFilter full(full_in, s);
-    const auto a = drain(fast), b = drain(full);
-    ASSERT_EQ(a.size(), b.size());
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      ASSERT_EQ(a[i].parameters.size(), b[i].parameters.size());
-      for (std::size_t j = 0; j < a[i].parameters.size(); ++j) {
-        const toolpath::Value &x = a[i].parameters[j].value, &y = b[i].parameters[j].value;
-        ASSERT_EQ(x.kind, y.kind) << round << " " << i << " " << j;
-        ASSERT_EQ(x.flag, y.flag);
-        ASSERT_EQ(x.integer, y.integer);
-        ASSERT_EQ(bits_of(x.numeric), bits_of(y.numeric)) << round << " " << i << " " << j << " " << x.numeric;
-        ASSERT_EQ(x.text, y.text);
-      }
-    }
+    expect_same_as_every_value_in_full(in, s, round);
+    if (testing::Test::HasFatalFailure()) return;
   }
 }
 
@@ -212,18 +220,8 @@ TEST(PrecisionFilter, RepeatedFractionsGiveTheFullStepsResults) {
         c.parameters.push_back({names[rng() % std::size(names)], num(pool[rng() % (rng() % 3 ? 4 : std::size(pool))])});
       in.push_back(std::move(c));
     }
-    ListSource fast_in(in), full_in(in);
-    prp::PrecisionFilter fast(fast_in, s);
-    s.every_value_in_full = true;
-    prp::PrecisionFilter full(full_in, s);
-    const auto a = drain(fast), b = drain(full);
-    ASSERT_EQ(a.size(), b.size());
-    for (std::size_t i = 0; i < a.size(); ++i)
-      for (std::size_t j = 0; j < a[i].parameters.size(); ++j) {
-        const toolpath::Value &x = a[i].parameters[j].value, &y = b[i].parameters[j].value;
-        ASSERT_EQ(x.kind, y.kind);
-        ASSERT_EQ(bits_of(x.numeric), bits_of(y.numeric)) << round << " " << i << " " << a[i].parameters[j].name;
-      }
+    expect_same_as_every_value_in_full(in, s, round);
+    if (testing::Test::HasFatalFailure()) return;
   }
 }
 
