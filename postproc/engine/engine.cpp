@@ -70,7 +70,7 @@ unsigned usable_cpus() {
 
 // Reading on a thread of its own pays where a third CPU can run it. On two, the post and the
 // filters wait for it in turn and every command crosses between the CPUs once more: measured
-// slower (docs/performance.md, "Two threads or three").
+// slower (docs/performance.md, "Where the engine stands").
 bool reader_on_own_thread(RunOptions::ReaderThread choice) {
   if (choice != RunOptions::ReaderThread::Auto) return choice == RunOptions::ReaderThread::Own;
   static const bool three_or_more = usable_cpus() >= 3;
