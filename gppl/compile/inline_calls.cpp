@@ -11,8 +11,6 @@
 // call (the host follows each procedure's entry and exit). Copying procedures with a frame as
 // well (locals, generate statements: `@arc_plane`) was measured and dropped: an instruction that
 // opens the frame and one that closes it cost about what the call costs.
-#include <algorithm>
-
 #include "gppl/compile/compiler.hpp"
 
 namespace gppl {
@@ -60,17 +58,6 @@ void inline_leaf_calls(Program& program) {
   bool any = false;
   for (std::size_t p = 0; p < program.procedures.size(); ++p) any |= leaf[p] = copyable(program, program.procedures[p]);
   if (!any) return;
-  // Procedures own consecutive ranges of the code, in order; anything else is left as it is.
-  std::vector<std::uint32_t> order(program.procedures.size());
-  for (std::uint32_t p = 0; p < order.size(); ++p) order[p] = p;
-  std::sort(order.begin(), order.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return program.procedures[a].first < program.procedures[b].first; });
-  std::uint32_t expected = 0;
-  for (std::uint32_t p : order) {
-    if (program.procedures[p].first != expected) return;
-    expected = program.procedures[p].end;
-  }
-  if (expected != program.code.size()) return;
 
   const auto copied = [&](const Instruction& in) { return in.op == OpCode::Call && leaf[in.a]; };
   // Where each instruction of the old code lands: a copied call grows by its body less its final
