@@ -69,8 +69,10 @@ std::unique_ptr<TraceReader> TraceReader::open(const std::string& path) {
 }
 
 void TraceReader::screen_values(const ValueScreen* by_key) {
-  for (std::size_t k = 0; k <= param_key_count; ++k) memos_[k] = KeyMemo{};  // kept verdicts were by other screens
-  for (std::size_t k = 0; k <= param_key_count; ++k) memos_[k].screen = by_key[k];
+  for (std::size_t k = 0; k <= param_key_count; ++k) {
+    memos_[k] = KeyMemo{};  // kept verdicts were by other screens
+    memos_[k].screen = by_key[k];
+  }
   screening_ = true;
 }
 
