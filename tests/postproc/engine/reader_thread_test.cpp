@@ -4,25 +4,20 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "postproc/engine/engine.hpp"
+#include "shipped_posts.hpp"
+#include "tests/support/golden_file.hpp"
 #include "toolpath/trace_reader.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using postproc::RunOptions;
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 // What a run wrote: the NC program and the warnings, or the error that stopped it.
 struct Outcome {
@@ -35,10 +30,7 @@ Outcome post(const std::string& machine, const std::string& job, RunOptions::Rea
   fs::create_directories(dir);
   Outcome outcome;
   try {
-    postproc::EngineOptions engine_options;
-    engine_options.post = "../machines/" + machine + "/" + machine + ".gpp";
-    engine_options.prp = "../machines/" + machine + "/" + machine + ".prp";
-    postproc::Engine engine(engine_options);
+    postproc::Engine engine(engine_test::shipped_post(machine));
     std::istringstream in(job);
     toolpath::TraceReader reader(in, "job.trace");
     postproc::OutputFiles output(dir, postproc::OutputFiles::LineEnd::LF, true);
@@ -67,13 +59,8 @@ void expect_same_both_ways(const std::string& machine, const std::string& job) {
 }
 
 TEST(ReaderThread, ShippedPostsOnTheExampleJobs) {
-  const std::vector<std::string> jobs{"../docs/examples/drill-cycles.trace",   "../docs/examples/mill-turn-job.trace",
-                                      "../docs/examples/planes-helix.trace",   "../docs/examples/sample-job.trace",
-                                      "../docs/examples/subroutine-loops.trace", "../docs/examples/turning-job.trace",
-                                      "../docs/examples/turning-passes.trace", "../docs/examples/wire-edm-job.trace",
-                                      "golden/fanuc-sample/job.trace",         "golden/solidcam-fanuc/toolpath.trace"};
-  for (const std::string machine : {"fanuc", "linuxcnc", "mill-turn", "sinumerik", "wire-edm"}) {
-    for (const std::string& path : jobs) {
+  for (const std::string& machine : engine_test::kShippedMachines) {
+    for (const std::string& path : engine_test::kExampleJobs) {
       SCOPED_TRACE(machine + " " + path);
       const std::string job = slurp(path);
       ASSERT_FALSE(job.empty());

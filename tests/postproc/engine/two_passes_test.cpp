@@ -13,6 +13,8 @@
 #include "postproc/engine/engine.hpp"
 #include "postproc/engine/parameter_check.hpp"
 #include "prp/prp.hpp"
+#include "shipped_posts.hpp"
+#include "tests/support/golden_file.hpp"
 #include "toolpath/trace_reader.hpp"
 
 namespace {
@@ -82,10 +84,7 @@ protected:
       files.push_back(dir / ("reopen" + std::to_string(i) + ".trace"));
       std::ofstream(files.back(), std::ios::binary) << reopens[i];
     }
-    postproc::EngineOptions engine_options;
-    engine_options.post = "../machines/" + machine + "/" + machine + ".gpp";
-    engine_options.prp = "../machines/" + machine + "/" + machine + ".prp";
-    postproc::Engine engine(engine_options);
+    postproc::Engine engine(engine_test::shipped_post(machine));
     std::istringstream in(job);
     toolpath::TraceReader reader(in, "job.trace");
     postproc::OutputFiles output(dir, postproc::OutputFiles::LineEnd::LF, true);
@@ -165,25 +164,15 @@ TEST_F(TwoPasses, WrongValuesStopTheRunAsInOnePass) {
   }
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 // Every example job through every shipped post whose PRP generates procedures: two passes (where
 // the skim allows them) post what one pass posts, and fail where it fails.
 TEST_F(TwoPasses, ShippedPostsOnTheExampleJobs) {
-  const std::vector<std::string> jobs{"../docs/examples/drill-cycles.trace",   "../docs/examples/mill-turn-job.trace",
-                                      "../docs/examples/planes-helix.trace",   "../docs/examples/sample-job.trace",
-                                      "../docs/examples/subroutine-loops.trace", "../docs/examples/turning-job.trace",
-                                      "../docs/examples/turning-passes.trace", "../docs/examples/wire-edm-job.trace",
-                                      "golden/fanuc-sample/job.trace",         "golden/solidcam-fanuc/toolpath.trace"};
   int forecast = 0, posted = 0;
-  for (const std::string machine : {"fanuc", "linuxcnc", "mill-turn", "sinumerik", "wire-edm"}) {
-    const auto params = prp::load_file("../machines/" + machine + "/" + machine + ".prp", prp::Units::Metric);
-    for (const std::string& path : jobs) {
+  for (const std::string& machine : engine_test::kShippedMachines) {
+    const auto params = prp::load_file(engine_test::shipped_file(machine, "prp"), prp::Units::Metric);
+    for (const std::string& path : engine_test::kExampleJobs) {
       SCOPED_TRACE(machine + " " + path);
       const std::string job = slurp(path);
       ASSERT_FALSE(job.empty());
