@@ -25,7 +25,12 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 using test_support::run_cli;
 
-const fs::path kDir = fs::temp_directory_path() / "postproc-explain-html";
+// A folder per test: ctest runs the tests of this file side by side, and two of them writing the
+// same page would take each other's staged file away ("cannot write file").
+fs::path test_dir() {
+  return fs::temp_directory_path() /
+         ("postproc-explain-html-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+}
 
 std::string chromium() {
   for (const char* name : {"chromium", "chromium-browser", "google-chrome"}) {
@@ -58,8 +63,8 @@ json selftest(const std::string& browser, const fs::path& page, const std::strin
 }
 
 fs::path sample_page() {
-  fs::create_directories(kDir);
-  const fs::path page = kDir / "sample.html";
+  fs::create_directories(test_dir());
+  const fs::path page = test_dir() / "sample.html";
   const auto r = run_cli({"explain", "--post", "../machines/fanuc/fanuc.gpp", "--prp", "../machines/fanuc/fanuc.prp", "-q",
                           "--html", page.string(), "../docs/examples/sample-job.trace"});
   EXPECT_EQ(r.code, 0) << r.err;
@@ -101,7 +106,7 @@ TEST(ExplainHtml, ClickingALineHighlightsItsSourceAndSegment) {
   EXPECT_EQ(plot["selected"]["command"], command);
   EXPECT_EQ(plot["ncHighlighted"], nc);
   // The artefact: the page with the line selected.
-  const fs::path png = kDir / "explain-page.png";
+  const fs::path png = test_dir() / "explain-page.png";
   fs::remove(png);
   shell(browser + " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --window-size=1400,900 "
                   "--virtual-time-budget=4000 --screenshot=" + png.string() + " 'file://" + page.string() + "#select=" +
@@ -115,7 +120,7 @@ TEST(ExplainHtml, ClickingALineHighlightsItsSourceAndSegment) {
 TEST(ExplainHtml, ALineOfAnIncludeFileShowsThatFile) {
   const std::string browser = chromium();
   if (browser.empty()) GTEST_SKIP() << "chromium is not installed (apt-get install chromium): the browser test needs it";
-  const fs::path dir = kDir / "include";
+  const fs::path dir = test_dir() / "include";
   fs::create_directories(dir / "lib");
   std::ofstream(dir / "p.gpp") << "@start_of_file\n  {nl, '%'}\nendp\n@rapid_move\nendp\ninc 'lib/moves.inc'\n";
   std::ofstream(dir / "lib" / "moves.inc") << "; moves\n@line\n  {nl, 'G1'}\nendp\n";
@@ -139,8 +144,8 @@ TEST(ExplainHtml, ALineOfAnIncludeFileShowsThatFile) {
 TEST(ExplainHtml, ALongProgramStaysSmallInTheBrowser) {
   const std::string browser = chromium();
   if (browser.empty()) GTEST_SKIP() << "chromium is not installed (apt-get install chromium): the browser test needs it";
-  fs::create_directories(kDir);
-  const fs::path job = kDir / "long.trace", page = kDir / "long.html";
+  fs::create_directories(test_dir());
+  const fs::path job = test_dir() / "long.trace", page = test_dir() / "long.html";
   {
     std::ofstream out(job, std::ios::binary);
     toolpath::TraceWriter writer(out);
